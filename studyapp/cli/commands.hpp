@@ -1,0 +1,11 @@
+// The `modalstudy` subcommands: each file registers one on the CLI11 app.
+#pragma once
+#include <CLI/CLI.hpp>
+
+namespace ms::cli {
+
+void register_synth(CLI::App& app);
+void register_stimuli(CLI::App& app);
+void register_bench(CLI::App& app);
+
+}  // namespace ms::cli

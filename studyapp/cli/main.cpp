@@ -1,0 +1,28 @@
+// modalstudy: the command line of ModalStudy (see README and ../shared/DESIGN.md §5).
+// Bad input ends with one line on stderr naming file:line:column and exit code 2.
+#include <exception>
+#include <iostream>
+
+#include "studyapp/cli/commands.hpp"
+#include "synthesis/input_error.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"ModalStudy: perceptual studies of modal impact sounds"};
+  app.set_version_flag("--version", "modalstudy 0.1.0");
+  app.require_subcommand(1);
+  ms::cli::register_synth(app);
+  ms::cli::register_stimuli(app);
+  ms::cli::register_bench(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const ms::InputError& e) {
+    std::cerr << "modalstudy: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "modalstudy: error: " << e.what() << "\n";
+    return 3;
+  }
+  return 0;
+}

@@ -1,0 +1,61 @@
+#include "synthesis/damping_law.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace ms {
+
+double DampingLaw::decay_per_s(double lambda) const {
+  const double omega = std::sqrt(std::max(lambda, 0.0));
+  switch (kind) {
+    case DampingKind::rayleigh: return 0.5 * (alpha1 + alpha2 * lambda);
+    case DampingKind::powerlaw: return 0.5 * alpha2 * std::pow(omega, 2.0 * alpha3);
+    case DampingKind::hybrid: return 0.5 * (alpha1 + alpha2 * std::pow(omega, 2.0 * alpha3));
+    case DampingKind::constant_q: return loss_factor * omega;
+  }
+  return 0.0;
+}
+
+DampingKind parse_damping_kind(const std::string& name) {
+  if (name == "rayleigh") return DampingKind::rayleigh;
+  if (name == "powerlaw") return DampingKind::powerlaw;
+  if (name == "hybrid") return DampingKind::hybrid;
+  if (name == "constant_q") return DampingKind::constant_q;
+  throw std::invalid_argument("unknown damping law '" + name +
+                              "' (expected rayleigh, powerlaw, hybrid or constant_q)");
+}
+
+std::string to_string(DampingKind kind) {
+  switch (kind) {
+    case DampingKind::rayleigh: return "rayleigh";
+    case DampingKind::powerlaw: return "powerlaw";
+    case DampingKind::hybrid: return "hybrid";
+    case DampingKind::constant_q: return "constant_q";
+  }
+  return "?";
+}
+
+ModalModel modes_from_eigenvalues(const std::vector<double>& lambda0, const DampingLaw& law,
+                                  double stiffness_ratio, double amp_scale,
+                                  const std::vector<double>& gains, std::size_t* overdamped) {
+  ModalModel model;
+  std::size_t dropped = 0;
+  for (std::size_t i = 0; i < lambda0.size(); ++i) {
+    const double lambda = stiffness_ratio * lambda0[i];
+    const double d = law.decay_per_s(lambda);
+    const double omega_d_sq = lambda - d * d;
+    if (!(omega_d_sq > 0.0)) {
+      ++dropped;
+      continue;
+    }
+    Mode m;
+    m.freq_hz = std::sqrt(omega_d_sq) / (2.0 * M_PI);
+    m.decay_per_s = d;
+    m.amp = amp_scale * (i < gains.size() ? gains[i] : 1.0);
+    model.modes.push_back(m);
+  }
+  if (overdamped) *overdamped = dropped;
+  return model;
+}
+
+}  // namespace ms

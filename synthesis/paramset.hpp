@@ -1,0 +1,38 @@
+// Parameter set: one stimulus recipe (stimuli/*.yaml), resolved into everything the renderer needs.
+// The model comes from inline modes, a modes CSV, or an analytic object (bar, plate, raw eigenvalues)
+// with a material or an explicit damping law. See README "Parameter sets" for every key.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "synthesis/audio_file.hpp"
+#include "synthesis/effects.hpp"
+#include "synthesis/excitation.hpp"
+#include "synthesis/modal_model.hpp"
+#include "synthesis/output_level.hpp"
+
+namespace ms {
+
+struct ParamSet {
+  std::string source;            // file it was read from ("" for text)
+  double sample_rate_hz = 44100;
+  double duration_s = 1.0;
+  ModalModel model;              // resolved modes, support damping and doublets applied
+  Excitation excitation;
+  OutputLevel level;
+  SampleFormat format = SampleFormat::float32;
+  std::string description;       // free text
+  std::vector<std::string> warnings;  // e.g. overdamped modes dropped
+  std::string recipe_hash;       // SHA-256 of the canonical resolved recipe (hex)
+};
+
+// Reads and resolves a parameter set; `overrides` are "key.path=value" (like --set).
+// Throws InputError with file:line:column for every problem a person can make.
+ParamSet load_paramset(const std::string& path, const std::vector<std::string>& overrides = {});
+ParamSet parse_paramset(const std::string& yaml_text, const std::string& file_for_errors,
+                        const std::string& base_dir, const std::vector<std::string>& overrides = {});
+
+// The canonical text the recipe hash is taken over (resolved values, 17 digits).
+std::string canonical_recipe(const ParamSet& p);
+
+}  // namespace ms

@@ -1,0 +1,156 @@
+#include "synthesis/reference_objects.hpp"
+
+#include <algorithm>
+#include <boost/math/special_functions/bessel.hpp>
+#include <boost/math/special_functions/bessel_prime.hpp>
+#include <boost/math/tools/roots.hpp>
+#include <cmath>
+#include <numeric>
+
+namespace ms {
+
+namespace {
+
+template <class F>
+double bracketed_root(F f, double lo, double hi) {
+  boost::math::tools::eps_tolerance<double> tol(50);
+  std::uintmax_t iterations = 200;
+  auto r = boost::math::tools::toms748_solve(f, lo, hi, tol, iterations);
+  return 0.5 * (r.first + r.second);
+}
+
+// Free-free bar mode shape at x (0..L) for root b = beta L, evaluated without overflow.
+// phi = cos(u) - s sin(u) + cosh(u) - s sinh(u), u = b x/L, s = (cosh b - cos b)/(sinh b - sin b).
+double bar_shape(double b, double x_rel) {
+  const double u = b * x_rel;
+  const double e = std::exp(-b);
+  const double denom_scaled = 0.5 * (1.0 - e * e - 2.0 * std::sin(b) * e);  // (sinh b - sin b) e^-b
+  const double one_minus_s_scaled = -(e - std::cos(b) + std::sin(b)) / denom_scaled;  // (1-s) e^b
+  const double one_minus_s = one_minus_s_scaled * e;
+  const double s = 1.0 - one_minus_s;
+  // cosh u - s sinh u = ((1-s) e^u + (1+s) e^-u) / 2
+  const double hyper = 0.5 * (one_minus_s_scaled * std::exp(u - b) + (1.0 + s) * std::exp(-u));
+  return std::cos(u) - s * std::sin(u) + hyper;
+}
+
+}  // namespace
+
+double free_bar_root(int n) {
+  const double guess = (n + 0.5) * M_PI;
+  auto f = [](double x) { return std::cos(x) - 1.0 / std::cosh(x); };
+  return bracketed_root(f, guess - 0.5, guess + 0.5);
+}
+
+ObjectModes free_free_bar(double length_m, double thickness_m, double hit_position,
+                          double max_lambda0, std::size_t max_modes) {
+  ObjectModes out;
+  const double shape_factor = thickness_m * thickness_m / 12.0 / std::pow(length_m, 4);
+  for (int n = 1; out.lambda0.size() < max_modes; ++n) {
+    const double b = free_bar_root(n);
+    const double lambda0 = std::pow(b, 4) * shape_factor;
+    if (lambda0 > max_lambda0) break;
+    out.lambda0.push_back(lambda0);
+    out.gain.push_back(bar_shape(b, hit_position));  // normalised: mean of phi^2 over the bar is 1
+    out.circumferential_order.push_back(0);
+  }
+  return out;
+}
+
+namespace {
+
+struct PlateEquation {
+  int n;
+  double nu;
+  // Cross-multiplied free-edge equation, I-terms divided by I_n(k) to stay finite.
+  double operator()(double k) const {
+    using boost::math::cyl_bessel_i;
+    using boost::math::cyl_bessel_i_prime;
+    using boost::math::cyl_bessel_j;
+    using boost::math::cyl_bessel_j_prime;
+    const double nn = double(n) * n;
+    const double j = cyl_bessel_j(n, k), jp = cyl_bessel_j_prime(n, k);
+    const double ri = cyl_bessel_i_prime(n, k) / cyl_bessel_i(n, k);
+    const double num1 = k * k * j + (1 - nu) * (k * jp - nn * j);
+    const double den1 = k * k - (1 - nu) * (k * ri - nn);
+    const double num2 = k * k * k * jp + (1 - nu) * nn * (k * jp - j);
+    const double den2 = k * k * k * ri - (1 - nu) * nn * (k * ri - 1);
+    return num1 * den2 - num2 * den1;
+  }
+  // W(r) = J_n(k r) + C I_n(k r), C from zero radial moment at the edge; r in units of the radius.
+  double shape(double k, double r) const {
+    using boost::math::cyl_bessel_i;
+    using boost::math::cyl_bessel_i_prime;
+    using boost::math::cyl_bessel_j;
+    using boost::math::cyl_bessel_j_prime;
+    const double nn = double(n) * n;
+    const double j = cyl_bessel_j(n, k), jp = cyl_bessel_j_prime(n, k);
+    const double ri = cyl_bessel_i_prime(n, k) / cyl_bessel_i(n, k);
+    const double num1 = k * k * j + (1 - nu) * (k * jp - nn * j);
+    const double den1 = k * k - (1 - nu) * (k * ri - nn);
+    const double c_scaled = -num1 / den1;  // C * I_n(k)
+    return cyl_bessel_j(n, k * r) + c_scaled * cyl_bessel_i(n, k * r) / cyl_bessel_i(n, k);
+  }
+};
+
+}  // namespace
+
+std::vector<double> free_plate_roots(int n, double poisson, double k_max) {
+  PlateEquation eq{n, poisson};
+  std::vector<double> roots;
+  const double step = 0.02;
+  double k0 = 0.5, g0 = eq(k0);
+  for (double k1 = k0 + step; k1 <= k_max + step; k1 += step) {
+    const double g1 = eq(k1);
+    if ((g0 < 0) != (g1 < 0)) {
+      const double r = bracketed_root(eq, k0, k1);
+      if (r <= k_max) roots.push_back(r);
+    }
+    k0 = k1;
+    g0 = g1;
+  }
+  return roots;
+}
+
+ObjectModes free_circular_plate(double radius_m, double thickness_m, double poisson,
+                                double hit_radius, double max_lambda0, std::size_t max_modes) {
+  // omega^2 = k^4 / a^4 * D/(rho h) with D/(rho h) = (E/rho) h^2 / (12 (1 - nu^2)).
+  const double stiffness = thickness_m * thickness_m / (12.0 * (1.0 - poisson * poisson));
+  const double a4 = std::pow(radius_m, 4);
+  const double k_max = std::pow(max_lambda0 * a4 / stiffness, 0.25);
+  struct Entry {
+    double lambda0, gain;
+    int n;
+  };
+  std::vector<Entry> entries;
+  for (int n = 0;; ++n) {
+    const auto roots = free_plate_roots(n, poisson, k_max);
+    if (roots.empty() && n > 2) break;
+    PlateEquation eq{n, poisson};
+    for (double k : roots) {
+      // Mass normalisation: mean of W^2 cos^2(n theta) over the disc is 1.
+      const int steps = 400;
+      double integral = 0.0;  // int_0^1 W(r)^2 r dr (midpoint rule)
+      for (int i = 0; i < steps; ++i) {
+        const double r = (i + 0.5) / steps;
+        const double w = eq.shape(k, r);
+        integral += w * w * r / steps;
+      }
+      const double angular = (n == 0) ? 1.0 : 0.5;  // mean of cos^2(n theta)
+      const double mean_sq = 2.0 * integral * angular;
+      entries.push_back({std::pow(k, 4) * stiffness / a4, eq.shape(k, hit_radius) / std::sqrt(mean_sq),
+                         n});
+    }
+  }
+  std::sort(entries.begin(), entries.end(),
+            [](const Entry& a, const Entry& b) { return a.lambda0 < b.lambda0; });
+  ObjectModes out;
+  for (const auto& e : entries) {
+    if (out.lambda0.size() >= max_modes) break;
+    out.lambda0.push_back(e.lambda0);
+    out.gain.push_back(e.gain);
+    out.circumferential_order.push_back(e.n);
+  }
+  return out;
+}
+
+}  // namespace ms
