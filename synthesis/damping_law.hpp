@@ -32,7 +32,8 @@ std::string to_string(DampingKind kind);
 
 // Modes from eigenvalues: lambda_i = stiffness_ratio * lambda0_i (gamma/gamma0), d_i from the law,
 // f_i = sqrt(lambda_i - d_i^2) / 2pi. Overdamped modes (d_i^2 >= lambda_i) are dropped and counted
-// in *overdamped. Amplitudes are amp_scale * gains[i] (gains may be empty: all 1).
+// in *overdamped. Amplitudes are |amp_scale * gains[i]| (gains may be empty: all 1), a negative
+// gain giving phase pi.
 ModalModel modes_from_eigenvalues(const std::vector<double>& lambda0, const DampingLaw& law,
                                   double stiffness_ratio, double amp_scale,
                                   const std::vector<double>& gains, std::size_t* overdamped);

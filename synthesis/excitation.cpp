@@ -7,8 +7,8 @@
 namespace ms {
 
 namespace {
-// int_0^1 sin(pi x)^1.5 dx = Gamma(1.25) / (sqrt(pi) Gamma(1.75)) = 0.8740191847...
-constexpr double kHertzArea = 0.87401918476403;
+// int_0^1 sin(pi x)^1.5 dx = Gamma(1.25) / (sqrt(pi) Gamma(1.75)) = 0.5564178944...
+constexpr double kHertzArea = 0.5564178944493822;
 
 // 16-point Gauss-Legendre nodes/weights on [-1, 1] (symmetric halves).
 constexpr std::array<double, 8> kGLx = {0.0950125098376374, 0.2816035507792589, 0.4580167776572274,

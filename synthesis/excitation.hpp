@@ -16,7 +16,7 @@ struct Excitation {
   double gain = 1.0;       // strike gain (force scale)
 
   // Force at time t [1/s], area 1 over [0, contact_s]: raised cosine (1 - cos(2 pi t/tau))/tau,
-  // Hertz-like sin(pi t/tau)^1.5 / (0.8740... tau) (the half-sine power of Hertzian contact).
+  // Hertz-like sin(pi t/tau)^1.5 / (0.5564... tau) (the half-sine power of Hertzian contact).
   double force(double t) const;
 };
 

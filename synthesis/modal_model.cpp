@@ -1,6 +1,7 @@
 #include "synthesis/modal_model.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace ms {
@@ -10,7 +11,10 @@ ModalModel at_hit_point(const ModalModel& model, std::size_t index) {
   ModalModel out;
   out.modes = model.modes;
   const auto& g = model.hit_gains[index];
-  for (std::size_t n = 0; n < out.modes.size() && n < g.size(); ++n) out.modes[n].amp *= g[n];
+  for (std::size_t n = 0; n < out.modes.size() && n < g.size(); ++n) {
+    out.modes[n].amp *= std::abs(g[n]);
+    if (g[n] < 0) out.modes[n].phase_rad += M_PI;  // amp stays >= 0; the sign is a phase
+  }
   return out;
 }
 

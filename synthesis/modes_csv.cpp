@@ -48,11 +48,12 @@ ModalModel parse_modes_csv(const std::string& text, const std::string& file) {
     break;
   }
   if (header.empty()) throw InputError(SourceLocation{file, 0, 0}, "empty modes CSV (no header)");
-  int col_f = -1, col_d = -1, col_a = -1;
+  int col_f = -1, col_d = -1, col_a = -1, col_p = -1;
   for (std::size_t i = 0; i < header.size(); ++i) {
     if (header[i] == "freq_hz") col_f = int(i);
     if (header[i] == "decay_per_s") col_d = int(i);
     if (header[i] == "amp") col_a = int(i);
+    if (header[i] == "phase_rad") col_p = int(i);
   }
   for (auto [col, name] : {std::pair{col_f, "freq_hz"}, {col_d, "decay_per_s"}, {col_a, "amp"}})
     if (col < 0)
@@ -86,7 +87,8 @@ ModalModel parse_modes_csv(const std::string& text, const std::string& file) {
     if (!(f > 0)) throw InputError(wf, "freq_hz must be greater than 0");
     if (d < 0) throw InputError(wd, "decay_per_s must not be negative");
     if (a < 0) throw InputError(wa, "amp must not be negative");
-    model.modes.push_back(Mode{f, d, a, 0.0});
+    const double phase = col_p >= 0 ? value(col_p, "phase_rad").first : 0.0;
+    model.modes.push_back(Mode{f, d, a, phase});
   }
   if (model.modes.empty()) throw InputError(SourceLocation{file, line_no, 0}, "modes CSV has no modes");
   return model;
@@ -102,10 +104,11 @@ ModalModel read_modes_csv(const std::string& path) {
 }
 
 void write_modes_csv(const std::string& path, const ModalModel& model) {
-  std::string out = "freq_hz,decay_per_s,amp\n";
+  std::string out = "freq_hz,decay_per_s,amp,phase_rad\n";
   char buf[128];
   for (const Mode& m : model.modes) {
-    std::snprintf(buf, sizeof buf, "%.17g,%.17g,%.17g\n", m.freq_hz, m.decay_per_s, m.amp);
+    std::snprintf(buf, sizeof buf, "%.17g,%.17g,%.17g,%.17g\n", m.freq_hz, m.decay_per_s, m.amp,
+                  m.phase_rad);
     out += buf;
   }
   write_file_atomically(path, out);

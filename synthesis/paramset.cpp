@@ -28,7 +28,7 @@ std::string join(const std::string& a, const std::string& b) { return a.empty() 
 
 struct ObjectSpec {
   std::string type;
-  std::vector<double> lambda0, gains;
+  std::vector<double> lambda0;
   std::vector<int> orders;
   std::vector<std::string> hit_names;
   std::vector<std::vector<double>> hit_gains;
@@ -62,22 +62,28 @@ ObjectSpec read_object(const YamlReader& r, const YAML::Node& node, double max_l
   if (!node["type"]) r.fail(node, "object", "missing 'type' (bar, plate or eigenvalues)");
   ObjectSpec spec;
   spec.type = r.text(node["type"], "object.type");
+  struct Hits {
+    std::vector<std::string> names;
+    std::vector<double> positions;
+  };
   auto hit_list = [&](const char* default_key, double fallback, double lo, double hi) {
-    std::vector<std::pair<std::string, double>> hits;
-    const double def = node[default_key] ? r.number(node[default_key], join("object", default_key))
-                                         : fallback;
+    Hits hits;
+    const std::string key = join("object", default_key);
+    const double def = node[default_key] ? r.number(node[default_key], key) : fallback;
     if (!(def >= lo && def <= hi))
-      r.fail(node[default_key], join("object", default_key),
-             "must lie in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-    hits.emplace_back("default", def);
+      r.fail(node[default_key], key, "must lie in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    hits.names.push_back("default");
+    hits.positions.push_back(def);
     if (node["hit_points"]) {
       const YAML::Node hp = node["hit_points"];
       if (!hp.IsMap()) r.fail(hp, "object.hit_points", "expected a map name: position");
       for (auto it = hp.begin(); it != hp.end(); ++it) {
-        const std::string key = "object.hit_points." + it->first.Scalar();
-        const double v = r.number(it->second, key);
-        if (!(v >= lo && v <= hi)) r.fail(it->second, key, "position out of range");
-        hits.emplace_back(it->first.Scalar(), v);
+        const std::string point = "object.hit_points." + it->first.Scalar();
+        const double v = r.number(it->second, point);
+        if (!(v >= lo && v <= hi))
+          r.fail(it->second, point, "must lie in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+        hits.names.push_back(it->first.Scalar());
+        hits.positions.push_back(v);
       }
     }
     return hits;
@@ -94,19 +100,14 @@ ObjectSpec read_object(const YamlReader& r, const YAML::Node& node, double max_l
     const double L = r.positive(node["length_m"], "object.length_m");
     const double h = r.positive(node["thickness_m"], "object.thickness_m");
     if (h >= L) r.fail(node["thickness_m"], "object.thickness_m", "must be smaller than length_m");
-    const auto hits = hit_list("hit_position", 0.22, 0.0, 1.0);
-    const double limit = unit_scale_unknown ? free_free_bar(L, h, 0.5, 1e300, 1).lambda0[0] * 1.0001
+    const auto hits = hit_list("hit_position", 0.1, 0.0, 1.0);
+    const double limit = unit_scale_unknown ? free_free_bar(L, h, {}, 1e300, 1).lambda0[0] * 1.0001
                                             : max_lambda0_of_unit;
-    for (const auto& [name, pos] : hits) {
-      const ObjectModes om = free_free_bar(L, h, pos, limit, unit_scale_unknown ? 1 : max_modes);
-      if (spec.lambda0.empty()) {
-        spec.lambda0 = om.lambda0;
-        spec.orders = om.circumferential_order;
-        spec.gains = om.gain;
-      }
-      spec.hit_names.push_back(name);
-      spec.hit_gains.push_back(om.gain);
-    }
+    const ObjectModes om = free_free_bar(L, h, hits.positions, limit, unit_scale_unknown ? 1 : max_modes);
+    spec.lambda0 = om.lambda0;
+    spec.orders = om.circumferential_order;
+    spec.hit_names = hits.names;
+    spec.hit_gains = om.gains;
   } else if (spec.type == "plate") {
     r.check_keys(node, "object", {"type", "radius_m", "thickness_m", "poisson", "hit_radius",
                                   "hit_points", "max_modes"});
@@ -117,24 +118,18 @@ ObjectSpec read_object(const YamlReader& r, const YAML::Node& node, double max_l
     if (h >= a) r.fail(node["thickness_m"], "object.thickness_m", "must be smaller than radius_m");
     const double nu = node["poisson"] ? r.number(node["poisson"], "object.poisson") : 0.33;
     if (!(nu > 0.0 && nu < 0.5)) r.fail(node["poisson"], "object.poisson", "must lie in (0, 0.5)");
-    const auto hits = hit_list("hit_radius", 0.3, 0.0, 1.0);
+    const auto hits = hit_list("hit_radius", 0.3, 0.0, 0.999);
     // The fundamental of a free plate is the (2 nodal diameters, 0 circles) mode.
     const double k0 = free_plate_roots(2, nu, 4.0).at(0);
     const double stiff = h * h / (12.0 * (1.0 - nu * nu));
     const double first = std::pow(k0, 4) * stiff / std::pow(a, 4);
     const double limit = unit_scale_unknown ? first * 1.0001 : max_lambda0_of_unit;
-    for (const auto& [name, pos] : hits) {
-      if (pos >= 1.0) r.fail(node["hit_radius"], "object.hit_radius", "must be below 1 (the rim)");
-      const ObjectModes om =
-          free_circular_plate(a, h, nu, pos, limit, unit_scale_unknown ? 1 : max_modes);
-      if (spec.lambda0.empty()) {
-        spec.lambda0 = om.lambda0;
-        spec.orders = om.circumferential_order;
-        spec.gains = om.gain;
-      }
-      spec.hit_names.push_back(name);
-      spec.hit_gains.push_back(om.gain);
-    }
+    const ObjectModes om =
+        free_circular_plate(a, h, nu, hits.positions, limit, unit_scale_unknown ? 1 : max_modes);
+    spec.lambda0 = om.lambda0;
+    spec.orders = om.circumferential_order;
+    spec.hit_names = hits.names;
+    spec.hit_gains = om.gains;
   } else if (spec.type == "eigenvalues") {
     r.check_keys(node, "object", {"type", "lambda0", "gains", "max_modes"});
     if (!node["lambda0"]) r.fail(node, "object", "eigenvalues needs 'lambda0' (a list)");
@@ -142,13 +137,13 @@ ObjectSpec read_object(const YamlReader& r, const YAML::Node& node, double max_l
     for (std::size_t i = 0; i < spec.lambda0.size(); ++i)
       if (!(spec.lambda0[i] > 0))
         r.fail(node["lambda0"][i], "object.lambda0[" + std::to_string(i) + "]", "must be > 0");
-    spec.gains = node["gains"] ? r.numbers(node["gains"], "object.gains")
-                               : std::vector<double>(spec.lambda0.size(), 1.0);
-    if (spec.gains.size() != spec.lambda0.size())
+    std::vector<double> gains = node["gains"] ? r.numbers(node["gains"], "object.gains")
+                                              : std::vector<double>(spec.lambda0.size(), 1.0);
+    if (gains.size() != spec.lambda0.size())
       r.fail(node["gains"], "object.gains", "needs one gain per eigenvalue");
     spec.orders.assign(spec.lambda0.size(), 0);
     spec.hit_names = {"default"};
-    spec.hit_gains = {spec.gains};
+    spec.hit_gains = {gains};
   } else {
     r.fail(node["type"], "object.type",
            "unknown object type '" + spec.type + "' (expected bar, plate or eigenvalues)");
@@ -296,7 +291,7 @@ ParamSet parse_paramset(const std::string& yaml_text, const std::string& file,
       const ObjectSpec first = read_object(r, root["object"], 0.0, true);
       scale = std::pow(2.0 * M_PI * f0, 2) / first.lambda0.at(0);
     }
-    const double max_lambda0 = std::pow(2.0 * M_PI * nyquist, 2) * 1.5 / scale;  // damping lowers f
+    const double max_lambda0 = std::pow(2.0 * M_PI * nyquist, 2) * 1.2 / scale;  // damping lowers f
     const ObjectSpec spec = read_object(r, root["object"], max_lambda0, false);
     // The hit point sets the amplitudes: the mode shapes at that point.
     std::size_t hit_index = 0;
@@ -320,6 +315,17 @@ ParamSet parse_paramset(const std::string& yaml_text, const std::string& file,
       const double lambda = scale * spec.lambda0[i], d = law.decay_per_s(lambda);
       if (lambda - d * d > 0) orders.push_back(spec.orders[i]);
     }
+    // An analytic object has infinitely many modes: truncate the series at Nyquist (no warning;
+    // only modes a person listed explicitly warn when they cannot sound).
+    std::vector<Mode> below;
+    std::vector<int> below_orders;
+    for (std::size_t i = 0; i < p.model.modes.size(); ++i)
+      if (p.model.modes[i].freq_hz < nyquist) {
+        below.push_back(p.model.modes[i]);
+        below_orders.push_back(orders[i]);
+      }
+    p.model.modes = std::move(below);
+    orders = std::move(below_orders);
     if (root["hit_gains"]) r.fail(root["hit_gains"], "hit_gains", "objects take 'object.hit_points'");
   }
   if (p.model.modes.size() > kMaxModes)

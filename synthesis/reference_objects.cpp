@@ -11,6 +11,12 @@ namespace ms {
 
 namespace {
 
+// 8-point Gauss-Legendre on [-1, 1]: nodes +-x, weights w.
+constexpr double kGauss8x[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
+                                0.9602898564975363};
+constexpr double kGauss8w[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
+                                0.1012285362903763};
+
 template <class F>
 double bracketed_root(F f, double lo, double hi) {
   boost::math::tools::eps_tolerance<double> tol(50);
@@ -41,16 +47,18 @@ double free_bar_root(int n) {
   return bracketed_root(f, guess - 0.5, guess + 0.5);
 }
 
-ObjectModes free_free_bar(double length_m, double thickness_m, double hit_position,
+ObjectModes free_free_bar(double length_m, double thickness_m, const std::vector<double>& hit_positions,
                           double max_lambda0, std::size_t max_modes) {
   ObjectModes out;
+  out.gains.resize(hit_positions.size());
   const double shape_factor = thickness_m * thickness_m / 12.0 / std::pow(length_m, 4);
   for (int n = 1; out.lambda0.size() < max_modes; ++n) {
     const double b = free_bar_root(n);
     const double lambda0 = std::pow(b, 4) * shape_factor;
     if (lambda0 > max_lambda0) break;
     out.lambda0.push_back(lambda0);
-    out.gain.push_back(bar_shape(b, hit_position));  // normalised: mean of phi^2 over the bar is 1
+    for (std::size_t h = 0; h < hit_positions.size(); ++h)  // normalised: mean of phi^2 is 1
+      out.gains[h].push_back(bar_shape(b, hit_positions[h]));
     out.circumferential_order.push_back(0);
   }
   return out;
@@ -76,19 +84,30 @@ struct PlateEquation {
     const double den2 = k * k * k * ri - (1 - nu) * nn * (k * ri - 1);
     return num1 * den2 - num2 * den1;
   }
-  // W(r) = J_n(k r) + C I_n(k r), C from zero radial moment at the edge; r in units of the radius.
-  double shape(double k, double r) const {
+};
+
+// Mode shape W(r) = J_n(k r) + C I_n(k r) of one root, C from zero radial moment at the edge;
+// r in units of the radius.
+struct PlateShape {
+  int n;
+  double k;
+  double c_over_ik;  // C * I_n(k), so that C I_n(k r) = c_over_ik * I_n(k r) / I_n(k)
+  double i_k;        // I_n(k)
+  PlateShape(int order, double root, double nu) : n(order), k(root) {
     using boost::math::cyl_bessel_i;
     using boost::math::cyl_bessel_i_prime;
     using boost::math::cyl_bessel_j;
     using boost::math::cyl_bessel_j_prime;
     const double nn = double(n) * n;
     const double j = cyl_bessel_j(n, k), jp = cyl_bessel_j_prime(n, k);
-    const double ri = cyl_bessel_i_prime(n, k) / cyl_bessel_i(n, k);
+    i_k = cyl_bessel_i(n, k);
+    const double ri = cyl_bessel_i_prime(n, k) / i_k;
     const double num1 = k * k * j + (1 - nu) * (k * jp - nn * j);
     const double den1 = k * k - (1 - nu) * (k * ri - nn);
-    const double c_scaled = -num1 / den1;  // C * I_n(k)
-    return cyl_bessel_j(n, k * r) + c_scaled * cyl_bessel_i(n, k * r) / cyl_bessel_i(n, k);
+    c_over_ik = -num1 / den1;  // C * I_n(k)
+  }
+  double operator()(double r) const {
+    return boost::math::cyl_bessel_j(n, k * r) + c_over_ik * boost::math::cyl_bessel_i(n, k * r) / i_k;
   }
 };
 
@@ -97,7 +116,7 @@ struct PlateEquation {
 std::vector<double> free_plate_roots(int n, double poisson, double k_max) {
   PlateEquation eq{n, poisson};
   std::vector<double> roots;
-  const double step = 0.02;
+  const double step = 0.1;  // roots of one order are ~pi apart
   double k0 = 0.5, g0 = eq(k0);
   for (double k1 = k0 + step; k1 <= k_max + step; k1 += step) {
     const double g1 = eq(k1);
@@ -112,42 +131,66 @@ std::vector<double> free_plate_roots(int n, double poisson, double k_max) {
 }
 
 ObjectModes free_circular_plate(double radius_m, double thickness_m, double poisson,
-                                double hit_radius, double max_lambda0, std::size_t max_modes) {
+                                const std::vector<double>& hit_radii, double max_lambda0,
+                                std::size_t max_modes) {
   // omega^2 = k^4 / a^4 * D/(rho h) with D/(rho h) = (E/rho) h^2 / (12 (1 - nu^2)).
   const double stiffness = thickness_m * thickness_m / (12.0 * (1.0 - poisson * poisson));
   const double a4 = std::pow(radius_m, 4);
-  const double k_max = std::pow(max_lambda0 * a4 / stiffness, 0.25);
+  // k is capped at 600 (about the 90,000th mode), where I_n(k) nears the double range.
+  const double k_max = std::min(600.0, std::pow(max_lambda0 * a4 / stiffness, 0.25));
+  // Roots of every order below k_max; once max_modes are known, k_max shrinks to the largest of
+  // the max_modes smallest roots (the first root of order n grows with n, so the scan ends).
+  struct Root {
+    double k;
+    int n;
+  };
+  std::vector<Root> roots_found;
+  double k_limit = k_max;
+  for (int n = 0;; ++n) {
+    const auto roots = free_plate_roots(n, poisson, k_limit);
+    if (roots.empty() && n > 2) break;
+    for (double k : roots) roots_found.push_back({k, n});
+    std::sort(roots_found.begin(), roots_found.end(), [](const Root& a, const Root& b) { return a.k < b.k; });
+    if (roots_found.size() > max_modes) {
+      roots_found.resize(max_modes);
+      k_limit = roots_found.back().k;
+    }
+  }
   struct Entry {
-    double lambda0, gain;
+    double lambda0;
+    std::vector<double> gains;
     int n;
   };
   std::vector<Entry> entries;
-  for (int n = 0;; ++n) {
-    const auto roots = free_plate_roots(n, poisson, k_max);
-    if (roots.empty() && n > 2) break;
-    PlateEquation eq{n, poisson};
-    for (double k : roots) {
-      // Mass normalisation: mean of W^2 cos^2(n theta) over the disc is 1.
-      const int steps = 400;
-      double integral = 0.0;  // int_0^1 W(r)^2 r dr (midpoint rule)
-      for (int i = 0; i < steps; ++i) {
-        const double r = (i + 0.5) / steps;
-        const double w = eq.shape(k, r);
-        integral += w * w * r / steps;
-      }
-      const double angular = (n == 0) ? 1.0 : 0.5;  // mean of cos^2(n theta)
-      const double mean_sq = 2.0 * integral * angular;
-      entries.push_back({std::pow(k, 4) * stiffness / a4, eq.shape(k, hit_radius) / std::sqrt(mean_sq),
-                         n});
+  for (const Root& root : roots_found) {
+    const PlateShape shape(root.n, root.k, poisson);
+    // Mass normalisation: mean of W^2 cos^2(n theta) over the disc is 1. int_0^1 W^2 r dr by
+    // 8-point Gauss-Legendre on panels short enough for the oscillation of J_n(k r).
+    const int panels = int(std::ceil(root.k / 2.0)) + 2;
+    double integral = 0.0;
+    for (int p = 0; p < panels; ++p) {
+      const double lo = double(p) / panels, h = 1.0 / panels;
+      for (std::size_t q = 0; q < 4; ++q)
+        for (double sign : {-1.0, 1.0}) {
+          const double r = lo + 0.5 * h * (1.0 + sign * kGauss8x[q]);
+          const double w = shape(r);
+          integral += 0.5 * h * kGauss8w[q] * w * w * r;
+        }
     }
+    const double angular = (root.n == 0) ? 1.0 : 0.5;  // mean of cos^2(n theta)
+    const double norm = std::sqrt(2.0 * integral * angular);
+    Entry e{std::pow(root.k, 4) * stiffness / a4, {}, root.n};
+    for (double r : hit_radii) e.gains.push_back(shape(r) / norm);
+    entries.push_back(std::move(e));
   }
   std::sort(entries.begin(), entries.end(),
             [](const Entry& a, const Entry& b) { return a.lambda0 < b.lambda0; });
   ObjectModes out;
+  out.gains.resize(hit_radii.size());
   for (const auto& e : entries) {
     if (out.lambda0.size() >= max_modes) break;
     out.lambda0.push_back(e.lambda0);
-    out.gain.push_back(e.gain);
+    for (std::size_t h = 0; h < hit_radii.size(); ++h) out.gains[h].push_back(e.gains[h]);
     out.circumferential_order.push_back(e.n);
   }
   return out;

@@ -11,7 +11,7 @@ ModalModel audible_model(const ParamSet& p, std::vector<std::string>& warnings) 
   const std::size_t dropped = drop_modes_at_or_above(model, 0.5 * p.sample_rate_hz);
   if (dropped > 0)
     warnings.push_back(std::to_string(dropped) + " mode(s) at or above Nyquist (" +
-                       std::to_string(0.5 * p.sample_rate_hz) + " Hz) dropped");
+                       std::to_string(std::lround(0.5 * p.sample_rate_hz)) + " Hz) dropped");
   return model;
 }
 

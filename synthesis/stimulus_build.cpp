@@ -71,6 +71,19 @@ std::map<std::string, nlohmann::json> read_manifest(const fs::path& path) {
   return by_name;
 }
 
+// Runs fn(i) for i in [0, count) on `threads` threads (work stealing by an atomic counter).
+template <class Fn>
+void parallel_for(std::size_t count, unsigned threads, Fn fn) {
+  std::atomic<std::size_t> next{0};
+  auto worker = [&] {
+    for (std::size_t k; (k = next++) < count;) fn(k);
+  };
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+}
+
 }  // namespace
 
 BuildReport build_stimuli(const std::vector<std::string>& inputs, const std::string& out_dir,
@@ -81,14 +94,17 @@ BuildReport build_stimuli(const std::vector<std::string>& inputs, const std::str
                                      "no parameter sets (*.yaml) found");
   // Read and check every set before writing anything.
   std::vector<ParamSet> sets(jobs.size());
-  std::vector<std::string> problems;
-  for (std::size_t i = 0; i < jobs.size(); ++i) {
+  std::vector<std::string> problem_of(jobs.size());
+  parallel_for(jobs.size(), std::max(1u, threads), [&](std::size_t i) {
     try {
       sets[i] = load_paramset(jobs[i].source);
     } catch (const InputError& e) {
-      problems.push_back(e.what());
+      problem_of[i] = e.what();
     }
-  }
+  });
+  std::vector<std::string> problems;
+  for (const auto& pr : problem_of)
+    if (!pr.empty()) problems.push_back(pr);
   if (!problems.empty()) {
     if (errors) *errors = problems;
     throw InputError(problems.front() + (problems.size() > 1 ? " (and " + std::to_string(problems.size() - 1) +
@@ -125,33 +141,27 @@ BuildReport build_stimuli(const std::vector<std::string>& inputs, const std::str
   }
 
   report.threads = std::max(1u, std::min<unsigned>(threads, unsigned(std::max<std::size_t>(todo.size(), 1))));
-  std::atomic<std::size_t> next{0};
   std::mutex failure_mutex;
   std::vector<std::string> failures;
-  auto worker = [&] {
-    for (std::size_t k; (k = next++) < todo.size();) {
-      const std::size_t i = todo[k];
-      BuildEntry& e = report.entries[i];
-      try {
-        const RenderedStimulus r = render_stimulus(sets[i]);
-        const fs::path out = fs::path(out_dir) / e.name;
-        fs::create_directories(out.parent_path());
-        write_wav(out.string(), r.audio, sets[i].format);
-        e.sha256 = sha256_file_hex(out.string());
-        e.frames = r.audio.frames();
-        e.sample_rate_hz = r.audio.sample_rate_hz;
-        e.modes = r.modes_rendered;
-        e.warnings = r.warnings;
-        e.rendered = true;
-      } catch (const std::exception& ex) {
-        std::lock_guard<std::mutex> lock(failure_mutex);
-        failures.push_back(ex.what());
-      }
+  parallel_for(todo.size(), report.threads, [&](std::size_t k) {
+    const std::size_t i = todo[k];
+    BuildEntry& e = report.entries[i];
+    try {
+      const RenderedStimulus r = render_stimulus(sets[i]);
+      const fs::path out = fs::path(out_dir) / e.name;
+      fs::create_directories(out.parent_path());
+      write_wav(out.string(), r.audio, sets[i].format);
+      e.sha256 = sha256_file_hex(out.string());
+      e.frames = r.audio.frames();
+      e.sample_rate_hz = r.audio.sample_rate_hz;
+      e.modes = r.modes_rendered;
+      e.warnings = r.warnings;
+      e.rendered = true;
+    } catch (const std::exception& ex) {
+      std::lock_guard<std::mutex> lock(failure_mutex);
+      failures.push_back(ex.what());
     }
-  };
-  std::vector<std::thread> pool;
-  for (unsigned t = 0; t < report.threads; ++t) pool.emplace_back(worker);
-  for (auto& t : pool) t.join();
+  });
   report.rendered = todo.size() - failures.size();
 
   // The manifest lists only what exists and is verified, so it is never stale.

@@ -6,6 +6,7 @@
 #include "studyapp/cli/commands.hpp"
 #include "synthesis/audio_file.hpp"
 #include "synthesis/input_error.hpp"
+#include "synthesis/modes_csv.hpp"
 #include "synthesis/paramset.hpp"
 #include "synthesis/stimulus.hpp"
 
@@ -13,7 +14,7 @@ namespace ms::cli {
 
 void register_synth(CLI::App& app) {
   struct Options {
-    std::string paramset, output, format;
+    std::string paramset, output, format, modes_out;
     std::vector<std::string> sets;
     bool json = false;
   };
@@ -23,6 +24,7 @@ void register_synth(CLI::App& app) {
   cmd->add_option("-o,--output", opt->output, "Output WAV file")->required();
   cmd->add_option("--set", opt->sets, "Override a key, e.g. --set excitation.contact_s=0.002");
   cmd->add_option("--format", opt->format, "float32 | pcm24 | pcm16 (default: the set's output.format)");
+  cmd->add_option("--modes-out", opt->modes_out, "Also write the rendered modes as a modes CSV");
   cmd->add_flag("--json", opt->json, "Print one JSON object describing the result");
   cmd->callback([opt] {
     ParamSet p = load_paramset(opt->paramset, opt->sets);
@@ -35,6 +37,10 @@ void register_synth(CLI::App& app) {
     }
     const RenderedStimulus r = render_stimulus(p);
     write_wav(opt->output, r.audio, p.format);
+    if (!opt->modes_out.empty()) {
+      std::vector<std::string> ignored;
+      write_modes_csv(opt->modes_out, audible_model(p, ignored));
+    }
     if (opt->json) {
       nlohmann::json j = {{"output", opt->output},       {"recipe_hash", p.recipe_hash},
                           {"sample_rate", p.sample_rate_hz}, {"frames", r.audio.frames()},
