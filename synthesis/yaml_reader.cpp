@@ -151,6 +151,12 @@ std::string nearest_key(const std::string& key, const std::vector<std::string>& 
         cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (key[i - 1] != c[j - 1])});
       std::swap(prev, cur);
     }
+    // A key that is a prefix of a valid one ("decay" for "decay_per_s") is a near miss too.
+    const bool prefix = key.size() >= 3 && c.rfind(key, 0) == 0;
+    if (prefix && best_d > 1) {
+      best_d = 1;
+      best = c;
+    }
     if (prev[c.size()] < best_d) {
       best_d = prev[c.size()];
       best = c;
