@@ -142,6 +142,47 @@ double minimise_exponent(const std::function<double(double)>& f, int* evaluation
   return f(p) <= best_f ? p : best_p;
 }
 
+// Residual sum of squares of the scaled law theta (law part) and its Gauss-Newton polish: the 1-D
+// profile search leaves alpha3 at ~sqrt(eps) (the RSS is flat at its minimum); a few Gauss-Newton
+// steps on all law parameters reach the least-squares optimum to rounding. `*evaluations` counts steps.
+double law_rss(const EmgProblem& pr, const EmgVector& theta);
+
+void polish_least_squares(const EmgProblem& pr, EmgVector& theta, int* evaluations) {
+  const int k = int(theta.size());
+  double rss = law_rss(pr, theta);
+  for (int it = 0; it < 30; ++it) {
+    Eigen::MatrixXd JtJ = Eigen::MatrixXd::Zero(k, k);
+    Eigen::VectorXd Jtr = Eigen::VectorXd::Zero(k);
+    Eigen::VectorXd grad_m(k);
+    for (std::size_t i = 0; i < pr.x.size(); ++i) {
+      const double pw = std::exp(theta[k - 1] * pr.log_x[i]);
+      const double b = theta[k - 2];
+      const double m = (k == 3 ? theta[0] : 0.0) + b * pw;
+      if (k == 3) grad_m[0] = 1.0;
+      grad_m[k - 2] = pw;
+      grad_m[k - 1] = b * pw * pr.log_x[i];
+      JtJ.selfadjointView<Eigen::Lower>().rankUpdate(grad_m);
+      Jtr += (pr.y[i] - m) * grad_m;
+    }
+    const Eigen::VectorXd step = JtJ.selfadjointView<Eigen::Lower>().ldlt().solve(Jtr);
+    if (!step.allFinite()) break;
+    double t = 1.0;
+    bool improved = false;
+    for (int ls = 0; ls < 30 && !improved; ++ls, t *= 0.5) {
+      const EmgVector trial = theta + t * step;
+      const double r = law_rss(pr, trial);
+      if (r <= rss) {
+        improved = r < rss;
+        theta = trial;
+        rss = r;
+        break;
+      }
+    }
+    if (evaluations) ++*evaluations;
+    if (!improved || step.cwiseAbs().maxCoeff() < 1e-15) break;
+  }
+}
+
 // Law part of theta (scaled units) from an LSQ or LB fit.
 EmgVector fit_law_scaled(const EmgProblem& pr, DampingEstimator estimator, int* evaluations) {
   const std::size_t n = pr.x.size();
@@ -173,6 +214,7 @@ EmgVector fit_law_scaled(const EmgProblem& pr, DampingEstimator estimator, int* 
         const double p = minimise_exponent(rss, evaluations);
         rss(p);
         theta << least_squares_line(u, pr.y, false).slope, p;
+        polish_least_squares(pr, theta, evaluations);
       }
       break;
     }
@@ -186,6 +228,7 @@ EmgVector fit_law_scaled(const EmgProblem& pr, DampingEstimator estimator, int* 
       const double p = minimise_exponent([&](double q) { return fit_at(q).objective; }, evaluations);
       const Line l = fit_at(p);
       theta << l.intercept, l.slope, p;
+      if (!lb) polish_least_squares(pr, theta, evaluations);
       break;
     }
     case DampingKind::constant_q: throw std::invalid_argument("constant_q is not fitted");
@@ -201,6 +244,15 @@ double scaled_model(const EmgProblem& pr, const EmgVector& theta, std::size_t i)
     case DampingKind::powerlaw: return theta[0] * std::exp(theta[1] * pr.log_x[i]);
     default: return theta[0] + theta[1] * std::exp(theta[2] * pr.log_x[i]);
   }
+}
+
+double law_rss(const EmgProblem& pr, const EmgVector& theta) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < pr.x.size(); ++i) {
+    const double r = pr.y[i] - scaled_model(pr, theta, i);
+    sum += r * r;
+  }
+  return sum;
 }
 
 // Full EMG start from a law fit: eta from the spread of the residuals (the EMG's excess has mean
