@@ -290,6 +290,7 @@ NewtonResult maximise_emg(const EmgProblem& pr, EmgVector theta, const DampingFi
   EmgMatrix H;
   double f = emg_loglik_scaled(pr, theta, &g, &H);
   if (!std::isfinite(f)) return res;
+  const int np = int(theta.size());
   for (int it = 0; it < options.max_iterations; ++it) {
     EmgMatrix M = -H;
     const double diag_scale = std::max(1e-12, M.diagonal().cwiseAbs().maxCoeff());
@@ -308,6 +309,12 @@ NewtonResult maximise_emg(const EmgProblem& pr, EmgVector theta, const DampingFi
       d = g / diag_scale;
     }
     if (std::abs(decrement) < options.tolerance) {
+      res.converged = true;
+      break;
+    }
+    // sigma -> 0 with ascent continuing: the optimum is on the boundary (the EMG degenerates to a shifted
+    // exponential, an LB-like fit); the likelihood has converged long before sigma' = 1e-12.
+    if (theta[np - 2] < std::log(1e-12) && d[np - 2] < 0) {
       res.converged = true;
       break;
     }
