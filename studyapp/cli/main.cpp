@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   ms::cli::register_stimuli(app);
   ms::cli::register_bench(app);
   ms::cli::register_materials(app);
+  ms::cli::register_fit_damping(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
