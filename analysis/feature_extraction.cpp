@@ -48,7 +48,7 @@ std::vector<Band> wide_layout(double top_hz, double width_hz) {
 
 // ESPRIT on every band with energy above the noise; poles whose frequency lies in the band's core.
 void scan_bands(SubbandSplitter& split, const std::vector<Band>& bands, double fs, double max_s,
-                double min_freq_hz, std::vector<DampedComponent>& found) {
+                double min_freq_hz, double hum_decay_per_s, std::vector<DampedComponent>& found) {
   for (const Band& b : bands) {
     // A band whose loudest bin is within ~13 dB of the noise has nothing ESPRIT could find there.
     if (split.peak_to_noise(b.lo_hz, b.hi_hz) < 20.0) continue;
@@ -76,7 +76,9 @@ void scan_bands(SubbandSplitter& split, const std::vector<Band>& bands, double f
       if (std::abs(z) <= 0.0) continue;
       const double f = sig.center_hz + std::arg(z) * sig.rate_hz / kTwoPi;
       const double d = -std::log(std::abs(z)) * sig.rate_hz;
-      if (f < b.lo_hz || f >= b.hi_hz || f < min_freq_hz || d > 0.25 * sig.rate_hz) continue;
+      // Stationary lines (hum) are dropped here already: they are not part of the impact.
+      if (f < b.lo_hz || f >= b.hi_hz || f < min_freq_hz || d > 0.25 * sig.rate_hz || d < hum_decay_per_s)
+        continue;
       found.push_back({cd(-std::max(d, 0.0), kTwoPi * f) / fs, cd(0.0, 0.0)});
     }
   }
@@ -158,22 +160,43 @@ ExtractedFeatures extract_features(const std::vector<float>& samples, double fs,
   ro.max_iterations = options.refine_iterations;
   // Narrow bands over the whole duration (slow and moderately damped modes), then wide bands over
   // the early part (fast modes the narrow masks' kernels hide), each on what is still unexplained.
+  const double noise_energy = sigma * sigma;
+  auto audible = [&](const DampedComponent& c) {
+    return 10.0 * std::log10(component_energy(c, frames) / noise_energy) >= options.min_snr_db;
+  };
+  // Candidates under the noise go at once; at most kMaxCandidates (strongest) survive a scan, which
+  // bounds the joint fit on pathological input (e.g. dense stationary tones).
+  constexpr std::size_t kMaxCandidates = 240;
+  auto keep_audible = [&](std::vector<DampedComponent>& c) {
+    std::erase_if(c, [&](const DampedComponent& m) { return !audible(m); });
+    if (c.size() > kMaxCandidates) {
+      std::sort(c.begin(), c.end(), [&](const auto& a, const auto& b) {
+        return component_energy(a, frames) > component_energy(b, frames);
+      });
+      c.resize(kMaxCandidates);
+    }
+  };
   auto scan = [&](const std::vector<double>& signal, std::vector<DampedComponent>& found) {
     const std::size_t before = found.size();
     {
       SubbandSplitter split(signal, fs, sigma);
       scan_bands(split, narrow_layout(top_hz, options.narrow_band_hz), fs, options.max_duration_s,
-                 options.min_freq_hz, found);
+                 options.min_freq_hz, options.hum_decay_per_s, found);
     }
     std::vector<DampedComponent> with_slow(found.begin() + std::ptrdiff_t(before), found.end());
     fit_amplitudes(signal, with_slow);
+    keep_audible(with_slow);
+    found.resize(before);
+    found.insert(found.end(), with_slow.begin(), with_slow.end());
     const std::vector<double> rest = subtract_components(signal, with_slow, early);
     std::vector<DampedComponent> fast;
     SubbandSplitter split(rest, fs, sigma);
     scan_bands(split, wide_layout(top_hz, options.wide_band_hz), fs, options.wide_window_s,
-               options.min_freq_hz, fast);
-    for (const auto& c : fast)
-      if (-c.s.real() * fs >= options.fast_decay_per_s) found.push_back(c);
+               options.min_freq_hz, options.hum_decay_per_s, fast);
+    std::erase_if(fast, [&](const DampedComponent& c) { return -c.s.real() * fs < options.fast_decay_per_s; });
+    fit_amplitudes(rest, fast);
+    keep_audible(fast);
+    found.insert(found.end(), fast.begin(), fast.end());
   };
   std::vector<DampedComponent> comps;
   scan(s, comps);
@@ -188,12 +211,11 @@ ExtractedFeatures extract_features(const std::vector<float>& samples, double fs,
     }
   }
   merge_duplicates(comps, fs);
-  const double noise_energy = sigma * sigma;
   for (int pass = 0; pass < 2; ++pass) {
     std::erase_if(comps, [&](const DampedComponent& c) {
       const double d = -c.s.real() * fs, f = c.s.imag() * fs / kTwoPi;
       if (d < options.hum_decay_per_s || f < options.min_freq_hz || f >= 0.5 * fs) return true;
-      return 10.0 * std::log10(component_energy(c, frames) / noise_energy) < options.min_snr_db;
+      return !audible(c);
     });
     if (pass == 0) refine_poles(s, comps, ro);
     else fit_amplitudes(s, comps);

@@ -14,7 +14,8 @@ std::size_t find_onset(const std::vector<double>& x, double noise_sigma) {
   std::size_t n = 0;
   while (n < x.size() && std::abs(x[n]) < rise) ++n;
   if (n == x.size()) return n;
-  const double quiet = 4.0 * noise_sigma;
+  // 60 dB under the peak counts as quiet too, should the noise estimate be far too low.
+  const double quiet = std::max(4.0 * noise_sigma, 1e-3 * peak);
   constexpr std::size_t kReach = 8;  // a zero crossing of the rising signal must not stop the walk
   auto loud_before = [&](std::size_t at) {
     for (std::size_t i = at >= kReach ? at - kReach : 0; i < at; ++i)

@@ -1,5 +1,5 @@
 // Onset of an impact: the first sample where |x| rises above max(8 sigma, 2 % of the peak), moved
-// back while the 8-sample neighbourhood still stands above 4 sigma, then one sample earlier (the
+// back while the 8-sample neighbourhood still stands above max(4 sigma, peak - 60 dB), then one sample earlier (the
 // last sample at noise level: a struck mode starts from rest, so its first sample is ~0).
 #pragma once
 #include <cstddef>
