@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace ms {
@@ -170,7 +171,10 @@ double solve_amplitudes(double x_energy, const Projections& pr, std::vector<Damp
   // A whisper of ridge keeps coincident poles solvable.
   const double ridge = 1e-12 * G.diagonal().maxCoeff();
   G.diagonal().array() += ridge;
-  const Eigen::VectorXd beta = G.ldlt().solve(r);
+  Eigen::VectorXd beta = G.ldlt().solve(r);
+  // Nearly coincident poles can defeat LDLT; rank-revealing QR copes.
+  if (!beta.allFinite()) beta = G.colPivHouseholderQr().solve(r);
+  if (!beta.allFinite()) return std::numeric_limits<double>::infinity();
   for (std::size_t k = 0; k < K; ++k) c[k].b = {beta(Eigen::Index(2 * k)), beta(Eigen::Index(2 * k + 1))};
   return std::max(0.0, x_energy - beta.dot(r));
 }
@@ -266,8 +270,11 @@ double refine_poles(const std::vector<double>& x, std::vector<DampedComponent>& 
       L.diagonal() += lambda * A.diagonal();
       const Eigen::VectorXd delta = L.ldlt().solve(g);
       std::vector<DampedComponent> trial = c;
-      for (std::size_t k = 0; k < K; ++k)
+      for (std::size_t k = 0; k < K; ++k) {
         trial[k].s += cd(delta(Eigen::Index(4 * k + 2)), delta(Eigen::Index(4 * k + 3)));
+        // Growing components are not modes (and would overflow the closed forms): keep d >= 0.
+        trial[k].s = {std::min(trial[k].s.real(), 0.0), trial[k].s.imag()};
+      }
       Projections tp = project(x, trial);
       const double tcost = solve_amplitudes(xe, tp, trial, N);
       if (std::isfinite(tcost) && tcost < cost) {

@@ -20,7 +20,7 @@ namespace {
 using cd = std::complex<double>;
 constexpr double kFs = 44100.0;
 
-TEST(DampedFit, WeightedGeometricSumsMatchDirectSums) {
+TEST(FeatureDampedFit, WeightedGeometricSumsMatchDirectSums) {
   const std::size_t N = 5000;
   // Small, moderate and aliased (|Im| > pi) exponents, both branches of the implementation.
   for (cd sigma : {cd(-1e-7, 2e-6), cd(-2e-4, 0.03), cd(-0.01, 3.5), cd(0.0, 0.0), cd(-3e-6, -1e-5)}) {
@@ -33,7 +33,7 @@ TEST(DampedFit, WeightedGeometricSumsMatchDirectSums) {
   }
 }
 
-TEST(DampedFit, RefineRecoversPolesFromRoughStart) {
+TEST(FeatureDampedFit, RefineRecoversPolesFromRoughStart) {
   ModalModel m;
   m.modes = {{440.0, 4.0, 0.3, 0.0}, {1234.5, 60.0, 0.1, 0.0}};
   const auto x = render_reference(m, {}, kFs, 22050);
@@ -85,7 +85,7 @@ TEST(Onset, FindsTheImpactAfterLeadingNoise) {
   }
 }
 
-TEST(RecordingProblem, NamesSilenceClippingAndShortness) {
+TEST(ExtractInputCheck, NamesSilenceClippingAndShortness) {
   EXPECT_NE(recording_problem(std::vector<float>(44100, 0.0f), kFs)->find("silent"), std::string::npos);
   std::vector<float> square(44100);
   for (std::size_t n = 0; n < square.size(); ++n) square[n] = (n / 40) % 2 ? 1.0f : -1.0f;
