@@ -9,5 +9,6 @@ void register_stimuli(CLI::App& app);
 void register_bench(CLI::App& app);
 void register_materials(CLI::App& app);
 void register_fit_damping(CLI::App& app);
+void register_extract(CLI::App& app);
 
 }  // namespace ms::cli

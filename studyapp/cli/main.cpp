@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   ms::cli::register_bench(app);
   ms::cli::register_materials(app);
   ms::cli::register_fit_damping(app);
+  ms::cli::register_extract(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

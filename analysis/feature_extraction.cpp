@@ -1,0 +1,235 @@
+// Sub-band ESPRIT + joint refinement + noise/hum clean-up; see feature_extraction.hpp.
+#include "analysis/feature_extraction.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <numbers>
+
+#include "analysis/damped_fit.hpp"
+#include "analysis/esprit.hpp"
+#include "analysis/noise_floor.hpp"
+#include "analysis/onset.hpp"
+#include "analysis/subband.hpp"
+
+namespace ms {
+namespace {
+
+using cd = std::complex<double>;
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+struct Band {
+  double lo_hz, hi_hz;
+};
+
+// Narrow bands: 100 Hz at the bottom (crowded, with mirror images below 0 Hz), growing by half the
+// lower edge up to the nominal width.
+std::vector<Band> narrow_layout(double top_hz, double width_hz) {
+  std::vector<Band> bands;
+  for (double lo = 0.0; lo < top_hz;) {
+    const double w = std::clamp(0.5 * lo, std::min(100.0, width_hz), width_hz);
+    bands.push_back({lo, std::min(lo + w, top_hz)});
+    lo += w;
+  }
+  return bands;
+}
+
+// Wide bands: 400 Hz at the bottom (a short window still spans a few periods), doubling up to the
+// nominal width.
+std::vector<Band> wide_layout(double top_hz, double width_hz) {
+  std::vector<Band> bands;
+  for (double lo = 0.0; lo < top_hz;) {
+    const double w = std::clamp(lo, std::min(400.0, width_hz), width_hz);
+    bands.push_back({lo, std::min(lo + w, top_hz)});
+    lo += w;
+  }
+  return bands;
+}
+
+// ESPRIT on every band with energy above the noise; poles whose frequency lies in the band's core.
+void scan_bands(SubbandSplitter& split, const std::vector<Band>& bands, double fs, double max_s,
+                double min_freq_hz, double hum_decay_per_s, std::vector<DampedComponent>& found) {
+  for (const Band& b : bands) {
+    // A band whose loudest bin is within ~13 dB of the noise has nothing ESPRIT could find there.
+    if (split.peak_to_noise(b.lo_hz, b.hi_hz) < 20.0) continue;
+    const double core = b.hi_hz - b.lo_hz;
+    BandSignal sig = split.band(0.5 * (b.lo_hz + b.hi_hz), core, core);
+    std::size_t end = std::min(sig.samples.size(), std::size_t(max_s * sig.rate_hz));
+    if (end > 2 * sig.settle) end -= sig.settle;
+    // Stop where the band has decayed into the noise (blocks of 16 samples, 3x the noise variance).
+    constexpr std::size_t kBlock = 16;
+    std::size_t last = sig.settle;
+    for (std::size_t j = sig.settle; j + kBlock <= end; j += kBlock) {
+      double p = 0.0;
+      for (std::size_t i = j; i < j + kBlock; ++i) p += std::norm(sig.samples[i]);
+      if (p > 3.0 * double(kBlock) * sig.noise_variance) last = j + kBlock;
+    }
+    end = std::min(end, last + 4 * kBlock);
+    if (end <= sig.settle + 24) continue;
+    const std::size_t length = end - sig.settle;
+    EspritOptions eo;
+    eo.window = std::clamp<std::size_t>(length / 3, 8, 64);
+    eo.max_order = eo.window - 4;
+    eo.noise_power = sig.noise_power;
+    const auto poles = esprit(sig.samples.data() + sig.settle, length, eo);
+    for (const cd& z : poles) {
+      if (std::abs(z) <= 0.0) continue;
+      const double f = sig.center_hz + std::arg(z) * sig.rate_hz / kTwoPi;
+      const double d = -std::log(std::abs(z)) * sig.rate_hz;
+      // Stationary lines (hum) are dropped here already: they are not part of the impact.
+      if (f < b.lo_hz || f >= b.hi_hz || f < min_freq_hz || d > 0.25 * sig.rate_hz || d < hum_decay_per_s)
+        continue;
+      found.push_back({cd(-std::max(d, 0.0), kTwoPi * f) / fs, cd(0.0, 0.0)});
+    }
+  }
+}
+
+// Energy of Re(b e^{s n}) over the frames (closed form).
+double component_energy(const DampedComponent& c, std::size_t frames) {
+  const cd t_abs = weighted_geometric_sum(0, cd(2.0 * c.s.real(), 0.0), frames);
+  const cd t_osc = weighted_geometric_sum(0, 2.0 * c.s, frames);
+  return 0.5 * (std::norm(c.b) * t_abs.real() + (c.b * c.b * t_osc).real());
+}
+
+// Poles closer than the estimation noise describe one mode: keep the stronger.
+void merge_duplicates(std::vector<DampedComponent>& c, double fs) {
+  std::sort(c.begin(), c.end(), [](const auto& a, const auto& b) { return std::abs(a.b) > std::abs(b.b); });
+  std::vector<DampedComponent> kept;
+  for (const auto& x : c) {
+    bool dup = false;
+    for (const auto& k : kept) {
+      const double df = std::abs(x.s.imag() - k.s.imag()) * fs / kTwoPi;
+      const double dd = std::abs(x.s.real() - k.s.real()) * fs;
+      const double dmax = std::max(-x.s.real(), -k.s.real()) * fs;
+      if (df < 0.2 + 0.02 * dmax / kTwoPi && dd < 0.25 * dmax + 0.2) dup = true;
+    }
+    if (!dup) kept.push_back(x);
+  }
+  c = std::move(kept);
+}
+
+}  // namespace
+
+std::optional<std::string> recording_problem(const std::vector<float>& samples, double sample_rate_hz) {
+  if (!(sample_rate_hz > 0.0)) return "sample rate is not positive";
+  if (double(samples.size()) < 0.05 * sample_rate_hz)
+    return "too short: " + std::to_string(samples.size()) + " frames, an impact needs at least 50 ms";
+  float top = 0.0f, bottom = 0.0f;
+  for (float v : samples) {
+    top = std::max(top, v);
+    bottom = std::min(bottom, v);
+  }
+  if (top == 0.0f && bottom == 0.0f) return "silent: every sample is zero";
+  // Clipping: runs of 3+ consecutive samples pinned at either rail, over 0.1 % of the recording.
+  std::size_t pinned = 0, run = 0;
+  float rail_prev = 0.0f;
+  for (float v : samples) {
+    const float rail = v >= top * (1.0f - 2e-7f) && top > 0.0f      ? 1.0f
+                       : v <= bottom * (1.0f - 2e-7f) && bottom < 0.0f ? -1.0f
+                                                                      : 0.0f;
+    run = (rail != 0.0f && rail == rail_prev) ? run + 1 : (rail != 0.0f ? 1 : 0);
+    if (run == 3) pinned += 3;
+    else if (run > 3) ++pinned;
+    rail_prev = rail;
+  }
+  if (double(pinned) > 1e-3 * double(samples.size()) && pinned >= 8)
+    return "clipped: " + std::to_string(pinned) + " samples are pinned at full scale";
+  return std::nullopt;
+}
+
+ExtractedFeatures extract_features(const std::vector<float>& samples, double fs,
+                                   const ExtractOptions& options) {
+  ExtractedFeatures out;
+  out.sample_rate_hz = fs;
+  std::vector<double> x(samples.begin(), samples.end());
+  out.noise_sigma = estimate_noise_sigma(x);
+  out.noise_floor_db = noise_floor_db(out.noise_sigma);
+  const std::size_t onset = find_onset(x, out.noise_sigma);
+  out.onset_s = double(std::min(onset, x.size())) / fs;
+  if (onset + std::size_t(0.01 * fs) >= x.size()) return out;
+  const std::size_t frames = std::min(x.size() - onset, std::size_t(options.max_duration_s * fs));
+  std::vector<double> s(x.begin() + std::ptrdiff_t(onset), x.begin() + std::ptrdiff_t(onset + frames));
+  // A tiny floor keeps the order selection sane on noiseless (synthetic) input.
+  double peak = 0.0;
+  for (double v : s) peak = std::max(peak, std::abs(v));
+  const double sigma = std::max(out.noise_sigma, 1e-7 * peak);
+  const double top_hz = 0.49 * fs;
+
+  const std::size_t early = std::min(frames, std::size_t(options.wide_window_s * fs));
+  RefineOptions ro;
+  ro.max_iterations = options.refine_iterations;
+  // Narrow bands over the whole duration (slow and moderately damped modes), then wide bands over
+  // the early part (fast modes the narrow masks' kernels hide), each on what is still unexplained.
+  const double noise_energy = sigma * sigma;
+  auto audible = [&](const DampedComponent& c) {
+    return 10.0 * std::log10(component_energy(c, frames) / noise_energy) >= options.min_snr_db;
+  };
+  // Candidates under the noise go at once; at most kMaxCandidates (strongest) survive a scan, which
+  // bounds the joint fit on pathological input (e.g. dense stationary tones).
+  constexpr std::size_t kMaxCandidates = 240;
+  auto keep_audible = [&](std::vector<DampedComponent>& c) {
+    std::erase_if(c, [&](const DampedComponent& m) { return !audible(m); });
+    if (c.size() > kMaxCandidates) {
+      std::sort(c.begin(), c.end(), [&](const auto& a, const auto& b) {
+        return component_energy(a, frames) > component_energy(b, frames);
+      });
+      c.resize(kMaxCandidates);
+    }
+  };
+  auto scan = [&](const std::vector<double>& signal, std::vector<DampedComponent>& found) {
+    const std::size_t before = found.size();
+    {
+      SubbandSplitter split(signal, fs, sigma);
+      scan_bands(split, narrow_layout(top_hz, options.narrow_band_hz), fs, options.max_duration_s,
+                 options.min_freq_hz, options.hum_decay_per_s, found);
+    }
+    std::vector<DampedComponent> with_slow(found.begin() + std::ptrdiff_t(before), found.end());
+    fit_amplitudes(signal, with_slow);
+    keep_audible(with_slow);
+    found.resize(before);
+    found.insert(found.end(), with_slow.begin(), with_slow.end());
+    const std::vector<double> rest = subtract_components(signal, with_slow, early);
+    std::vector<DampedComponent> fast;
+    SubbandSplitter split(rest, fs, sigma);
+    scan_bands(split, wide_layout(top_hz, options.wide_band_hz), fs, options.wide_window_s,
+               options.min_freq_hz, options.hum_decay_per_s, fast);
+    std::erase_if(fast, [&](const DampedComponent& c) { return -c.s.real() * fs < options.fast_decay_per_s; });
+    fit_amplitudes(rest, fast);
+    keep_audible(fast);
+    found.insert(found.end(), fast.begin(), fast.end());
+  };
+  std::vector<DampedComponent> comps;
+  scan(s, comps);
+  refine_poles(s, comps, ro);
+  // Greedy removal (Ren et al.): look again at the residual of the joint fit.
+  {
+    std::vector<DampedComponent> more;
+    scan(subtract_components(s, comps, frames), more);
+    if (!more.empty()) {
+      comps.insert(comps.end(), more.begin(), more.end());
+      refine_poles(s, comps, ro);
+    }
+  }
+  merge_duplicates(comps, fs);
+  for (int pass = 0; pass < 2; ++pass) {
+    std::erase_if(comps, [&](const DampedComponent& c) {
+      const double d = -c.s.real() * fs, f = c.s.imag() * fs / kTwoPi;
+      if (d < options.hum_decay_per_s || f < options.min_freq_hz || f >= 0.5 * fs) return true;
+      return !audible(c);
+    });
+    if (pass == 0) refine_poles(s, comps, ro);
+    else fit_amplitudes(s, comps);
+  }
+  for (const auto& c : comps) {
+    Mode m;
+    m.freq_hz = c.s.imag() * fs / kTwoPi;
+    m.decay_per_s = -c.s.real() * fs;
+    m.amp = std::abs(c.b);
+    m.phase_rad = std::remainder(std::arg(c.b) + 0.5 * std::numbers::pi, kTwoPi);
+    out.modes.push_back(m);
+  }
+  std::sort(out.modes.begin(), out.modes.end(), [](const Mode& a, const Mode& b) { return a.freq_hz < b.freq_hz; });
+  return out;
+}
+
+}  // namespace ms

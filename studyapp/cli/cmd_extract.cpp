@@ -1,0 +1,75 @@
+// modalstudy extract WAV... [--json] [-o FEATURES.csv] [--channel N]
+// Modal features (freq_hz, decay_per_s, amp at the onset) of impact recordings; see
+// analysis/feature_extraction.hpp. Every file is checked before anything is written.
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "analysis/feature_extraction.hpp"
+#include "studyapp/cli/commands.hpp"
+#include "synthesis/atomic_file.hpp"
+#include "synthesis/audio_file.hpp"
+#include "synthesis/input_error.hpp"
+
+namespace ms::cli {
+
+void register_extract(CLI::App& app) {
+  struct Options {
+    std::vector<std::string> inputs;
+    std::string output;
+    int channel = -1;
+    bool json = false;
+  };
+  auto opt = std::make_shared<Options>();
+  CLI::App* cmd = app.add_subcommand("extract", "Extract modal features (f, d, amp) from impact recordings");
+  cmd->add_option("wav", opt->inputs, "Recordings (WAV/FLAC/AIFF)")->required();
+  cmd->add_option("-o,--output", opt->output, "Write FEATURES.csv (sound,freq_hz,decay_per_s,amp)");
+  cmd->add_option("--channel", opt->channel, "0-based channel to analyse (default: mix to mono)");
+  cmd->add_flag("--json", opt->json, "Print one JSON object with every sound's modes");
+  cmd->callback([opt] {
+    std::vector<std::pair<std::string, ExtractedFeatures>> results;
+    for (const std::string& path : opt->inputs) {
+      const Audio audio = read_audio(path);
+      if (opt->channel >= audio.channels)
+        throw InputError(SourceLocation{path, 0, 0}, "--channel " + std::to_string(opt->channel) +
+                                                         " but the file has " + std::to_string(audio.channels) +
+                                                         " channel(s)");
+      const std::vector<float> x = mono(audio, opt->channel);
+      if (auto problem = recording_problem(x, audio.sample_rate_hz))
+        throw InputError(SourceLocation{path, 0, 0}, *problem);
+      ExtractedFeatures f = extract_features(x, audio.sample_rate_hz);
+      if (f.modes.empty()) throw InputError(SourceLocation{path, 0, 0}, "no modes found above the noise floor");
+      results.emplace_back(std::filesystem::path(path).stem().string(), std::move(f));
+    }
+    if (!opt->output.empty()) {
+      std::ostringstream csv;
+      csv.precision(10);
+      csv << "sound,freq_hz,decay_per_s,amp\n";
+      for (const auto& [name, f] : results)
+        for (const Mode& m : f.modes) csv << name << "," << m.freq_hz << "," << m.decay_per_s << "," << m.amp << "\n";
+      write_file_atomically(opt->output, csv.str());
+    }
+    if (opt->json) {
+      nlohmann::json sounds = nlohmann::json::array();
+      for (const auto& [name, f] : results) {
+        nlohmann::json modes = nlohmann::json::array();
+        for (const Mode& m : f.modes)
+          modes.push_back({{"freq_hz", m.freq_hz}, {"decay_per_s", m.decay_per_s}, {"amp", m.amp}});
+        sounds.push_back({{"sound", name},
+                          {"sample_rate", f.sample_rate_hz},
+                          {"onset_s", f.onset_s},
+                          {"noise_floor_db", f.noise_floor_db},
+                          {"modes", modes}});
+      }
+      std::cout << nlohmann::json{{"sounds", sounds}}.dump() << "\n";
+    } else {
+      for (const auto& [name, f] : results)
+        std::cout << name << ": " << f.modes.size() << " modes, onset " << f.onset_s << " s, noise floor "
+                  << f.noise_floor_db << " dB\n";
+    }
+  });
+}
+
+}  // namespace ms::cli

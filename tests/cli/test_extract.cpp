@@ -1,0 +1,166 @@
+// `modalstudy extract` end to end: a known impact written with write_wav comes back in the CSV and
+// JSON; bad recordings (silent, clipped, too short, not audio, missing) exit 2 with one line naming
+// the file and leave no output file.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <sstream>
+#include <string>
+
+#include "synthesis/audio_file.hpp"
+#include "synthesis/reference_renderer.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct CliRun {
+  int code;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+class ExtractCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("ms_extract_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  CliRun run(const std::string& args) {
+    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+    const std::string cmd = std::string(MODALSTUDY_BIN) + " " + args + " >" + out.string() + " 2>" + err.string();
+    const int status = std::system(cmd.c_str());
+    return {WEXITSTATUS(status), slurp(out), slurp(err)};
+  }
+
+  fs::path write(const std::string& name, const std::vector<float>& x, int channels = 1) {
+    ms::Audio a;
+    a.sample_rate_hz = 44100.0;
+    a.channels = channels;
+    a.samples = x;
+    const fs::path p = dir_ / name;
+    ms::write_wav(p.string(), a, ms::SampleFormat::float32);
+    return p;
+  }
+
+  // Bad input: exit 2, exactly one stderr line naming the file, no CSV left behind.
+  void expect_rejected(const fs::path& wav, const std::string& why) {
+    const fs::path csv = dir_ / "features.csv";
+    const CliRun r = run("extract " + wav.string() + " -o " + csv.string());
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find(wav.string()), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(why), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(fs::exists(csv));
+  }
+
+  fs::path dir_;
+};
+
+std::vector<float> two_mode_impact(double seconds, double lead_s = 0.0) {
+  ms::ModalModel m;
+  m.modes = {{523.0, 3.0, 0.4, 0.0}, {1870.0, 25.0, 0.2, 0.0}};
+  const auto clean = ms::render_reference(m, {}, 44100.0, std::size_t(seconds * 44100.0));
+  std::vector<float> x(std::size_t(lead_s * 44100.0), 0.0f);
+  for (double v : clean) x.push_back(float(v));
+  // Seeded white noise at -80 dB re full scale: the recording's noise floor.
+  std::mt19937 rng(42);
+  std::normal_distribution<double> noise(0.0, 1e-4);
+  for (float& v : x) v += float(noise(rng));
+  return x;
+}
+
+TEST_F(ExtractCli, CsvAndJsonCarryTheModes) {
+  const fs::path wav = write("bowl.wav", two_mode_impact(1.0, 0.25));
+  const fs::path csv = dir_ / "features.csv";
+  const CliRun r = run("extract " + wav.string() + " --json -o " + csv.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["sounds"].size(), 1u);
+  const auto& s = j["sounds"][0];
+  EXPECT_EQ(s["sound"], "bowl");
+  EXPECT_DOUBLE_EQ(s["sample_rate"].get<double>(), 44100.0);
+  EXPECT_NEAR(s["onset_s"].get<double>(), 0.25, 0.001);
+  EXPECT_NEAR(s["noise_floor_db"].get<double>(), -80.0, 1.0);
+  ASSERT_EQ(s["modes"].size(), 2u) << r.out;
+  EXPECT_NEAR(s["modes"][0]["freq_hz"].get<double>(), 523.0, 0.01);
+  EXPECT_NEAR(s["modes"][0]["decay_per_s"].get<double>(), 3.0, 0.03);
+  EXPECT_NEAR(s["modes"][0]["amp"].get<double>(), 0.4, 0.004);
+  EXPECT_NEAR(s["modes"][1]["freq_hz"].get<double>(), 1870.0, 0.02);
+  EXPECT_NEAR(s["modes"][1]["decay_per_s"].get<double>(), 25.0, 0.25);
+  EXPECT_NEAR(s["modes"][1]["amp"].get<double>(), 0.2, 0.002);
+  const std::string text = slurp(csv);
+  EXPECT_EQ(text.rfind("sound,freq_hz,decay_per_s,amp\n", 0), 0u) << text;
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 3) << text;
+  EXPECT_NE(text.find("\nbowl,523"), std::string::npos) << text;
+}
+
+TEST_F(ExtractCli, StereoMixAndChannelChoice) {
+  const auto mono = two_mode_impact(0.5);
+  std::vector<float> stereo;
+  for (float v : mono) {
+    stereo.push_back(v);
+    stereo.push_back(0.5f * v);
+  }
+  const fs::path wav = write("st.wav", stereo, 2);
+  const CliRun left = run("extract " + wav.string() + " --json --channel 0");
+  const CliRun mix = run("extract " + wav.string() + " --json");
+  ASSERT_EQ(left.code, 0) << left.err;
+  ASSERT_EQ(mix.code, 0) << mix.err;
+  const double a_left = nlohmann::json::parse(left.out)["sounds"][0]["modes"][0]["amp"].get<double>();
+  const double a_mix = nlohmann::json::parse(mix.out)["sounds"][0]["modes"][0]["amp"].get<double>();
+  EXPECT_NEAR(a_left, 0.4, 0.004);
+  EXPECT_NEAR(a_mix, 0.3, 0.003);  // (1 + 0.5) / 2 of the left channel
+  const CliRun bad = run("extract " + wav.string() + " --channel 2");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("channel"), std::string::npos);
+}
+
+TEST_F(ExtractCli, RejectsSilence) { expect_rejected(write("zeros.wav", std::vector<float>(44100, 0.0f)), "silent"); }
+
+TEST_F(ExtractCli, RejectsClipping) {
+  std::vector<float> square(44100);
+  for (std::size_t n = 0; n < square.size(); ++n) square[n] = (n / 50) % 2 ? 1.0f : -1.0f;
+  expect_rejected(write("square.wav", square), "clipped");
+}
+
+TEST_F(ExtractCli, RejectsTooShort) {
+  auto x = two_mode_impact(0.04);
+  expect_rejected(write("short.wav", x), "too short");
+}
+
+TEST_F(ExtractCli, RejectsNonAudio) {
+  const fs::path p = dir_ / "notes.wav";
+  std::ofstream(p) << "this is a text file, not a RIFF header\n";
+  expect_rejected(p, "not a readable audio file");
+}
+
+TEST_F(ExtractCli, RejectsMissingFile) { expect_rejected(dir_ / "nowhere.wav", "no such file"); }
+
+TEST_F(ExtractCli, OneBadFileOutOfManyWritesNothing) {
+  const fs::path good = write("good.wav", two_mode_impact(0.5));
+  const fs::path bad = write("zeros.wav", std::vector<float>(44100, 0.0f));
+  const fs::path csv = dir_ / "features.csv";
+  const CliRun r = run("extract " + good.string() + " " + bad.string() + " -o " + csv.string());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("zeros.wav"), std::string::npos);
+  EXPECT_FALSE(fs::exists(csv));
+}
+
+}  // namespace
