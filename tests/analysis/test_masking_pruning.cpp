@@ -1,6 +1,6 @@
 // Masking-based mode pruning (analysis/masking_pruning.hpp), Bark maps and the threshold in quiet.
-// Expected numbers are worked by hand in the comments; the digits beyond the working were computed
-// with Python's math module from the same formulas (12 significant digits).
+// Expected numbers are worked by hand in the comments; their full digits come from an independent
+// transcription of the rule, tests/data/masking_pruning/hand_values.py (Python's math module only).
 //
 // The 2002 paper (shared/papers/003) reports, for its Fig. 3: "Of the 179 modes of a vase, only 45
 // modes survive using a masking method with a_v = 5dB and a playback level of 70dB". Its vase modes
