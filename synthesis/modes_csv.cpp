@@ -36,7 +36,9 @@ std::vector<std::string> split_csv_line(const std::string& line) {
 
 }  // namespace
 
-ModalModel parse_modes_csv(const std::string& text, const std::string& file) {
+ModalModel parse_modes_csv(const std::string& text, const std::string& file,
+                           std::vector<int>* line_of_mode) {
+  if (line_of_mode) line_of_mode->clear();
   std::istringstream in(text);
   std::string line;
   int line_no = 0;
@@ -89,18 +91,19 @@ ModalModel parse_modes_csv(const std::string& text, const std::string& file) {
     if (a < 0) throw InputError(wa, "amp must not be negative");
     const double phase = col_p >= 0 ? value(col_p, "phase_rad").first : 0.0;
     model.modes.push_back(Mode{f, d, a, phase});
+    if (line_of_mode) line_of_mode->push_back(line_no);
   }
   if (model.modes.empty()) throw InputError(SourceLocation{file, line_no, 0}, "modes CSV has no modes");
   return model;
 }
 
-ModalModel read_modes_csv(const std::string& path) {
+ModalModel read_modes_csv(const std::string& path, std::vector<int>* line_of_mode) {
   if (!std::filesystem::exists(path)) throw InputError(SourceLocation{path, 0, 0}, "no such file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(SourceLocation{path, 0, 0}, "cannot read file");
   std::stringstream buffer;
   buffer << in.rdbuf();
-  return parse_modes_csv(buffer.str(), path);
+  return parse_modes_csv(buffer.str(), path, line_of_mode);
 }
 
 void write_modes_csv(const std::string& path, const ModalModel& model) {

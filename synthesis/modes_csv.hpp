@@ -2,13 +2,17 @@
 // other columns ignored), then one mode per row. Errors name file:line:column.
 #pragma once
 #include <string>
+#include <vector>
 
 #include "synthesis/modal_model.hpp"
 
 namespace ms {
 
-ModalModel read_modes_csv(const std::string& path);
-ModalModel parse_modes_csv(const std::string& text, const std::string& file_for_errors);
+// With `line_of_mode`, also gives the 1-based file line of each mode, so that a later check of a
+// mode (e.g. pruning's "decay 0 has infinite power") can name its row.
+ModalModel read_modes_csv(const std::string& path, std::vector<int>* line_of_mode = nullptr);
+ModalModel parse_modes_csv(const std::string& text, const std::string& file_for_errors,
+                           std::vector<int>* line_of_mode = nullptr);
 
 // Writes freq_hz,decay_per_s,amp,phase_rad with 17 significant digits (atomically).
 void write_modes_csv(const std::string& path, const ModalModel& model);

@@ -10,5 +10,6 @@ void register_bench(CLI::App& app);
 void register_materials(CLI::App& app);
 void register_fit_damping(CLI::App& app);
 void register_extract(CLI::App& app);
+void register_prune(CLI::App& app);
 
 }  // namespace ms::cli
