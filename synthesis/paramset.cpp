@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "synthesis/damping_law.hpp"
+#include "synthesis/masking_pruning.hpp"
 #include "synthesis/material.hpp"
 #include "synthesis/modes_csv.hpp"
 #include "synthesis/reference_objects.hpp"
@@ -182,7 +183,7 @@ ParamSet parse_paramset(const std::string& yaml_text, const std::string& file,
   r.check_keys(root, "", {"description", "sample_rate", "duration_s", "modes", "object", "material",
                           "damping_law", "damping", "specific_modulus_m2_s2", "stiffness_scale",
                           "size_scale", "amp_scale", "fundamental_hz", "hit", "hit_gains",
-                          "excitation", "effects", "level", "output"});
+                          "excitation", "effects", "prune", "level", "output"});
   ParamSet p;
   p.source = file;
   if (root["description"]) p.description = r.text(root["description"], "description");
@@ -398,6 +399,41 @@ ParamSet parse_paramset(const std::string& yaml_text, const std::string& file,
       }
       if (d["min_order"]) db.min_order = int(r.integer(d["min_order"], "effects.doublets.min_order"));
       apply_doublets(p.model, db, orders);
+    }
+  }
+
+  // Pruning sees the final model (after support damping and doublets): audibility depends on decay.
+  if (root["prune"] && !p.model.modes.empty()) {
+    const YAML::Node pr = root["prune"];
+    r.check_keys(pr, "prune", {"method", "threshold_db", "playback_db", "combine", "order", "keep"});
+    PruneOptions options;
+    auto choice = [&](const char* key, auto parse, auto& out, const char* expected) {
+      if (!pr[key]) return;
+      const std::string path = std::string("prune.") + key;
+      const auto v = parse(r.text(pr[key], path));
+      if (!v) r.fail(pr[key], path, "unknown value '" + pr[key].Scalar() + "' (expected " + expected + ")");
+      out = *v;
+    };
+    choice("method", parse_prune_method, options.method, "masking, naive, energy or loudness");
+    choice("combine", parse_masking_combine, options.combine, "max or sum");
+    choice("order", parse_mode_order, options.order, "naive, energy or loudness");
+    if (pr["threshold_db"]) options.threshold_db = r.number(pr["threshold_db"], "prune.threshold_db");
+    if (pr["playback_db"]) options.playback_db = r.number(pr["playback_db"], "prune.playback_db");
+    std::size_t keep = p.model.modes.size();
+    if (pr["keep"]) {
+      const long long k = r.integer(pr["keep"], "prune.keep");
+      if (k <= 0) r.fail(pr["keep"], "prune.keep", "must be at least 1");
+      keep = std::size_t(k);
+    }
+    try {
+      const PruneResult result = prune_modes(p.model, options);
+      p.modes_before_pruning = p.model.modes.size();
+      p.model = progressive_model(p.model, result, keep);
+    } catch (const PruneError& e) {
+      const YAML::Node field = pr[e.field()];
+      if (e.mode() == PruneError::kNoMode)
+        r.fail(field ? field : pr, "prune." + e.field(), e.problem());
+      r.fail(pr, "prune", "mode " + std::to_string(e.mode()) + ": " + e.problem());
     }
   }
 

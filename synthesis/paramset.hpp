@@ -23,6 +23,7 @@ struct ParamSet {
   SampleFormat format = SampleFormat::float32;
   std::string description;       // free text
   std::vector<std::string> warnings;  // e.g. overdamped modes dropped
+  std::size_t modes_before_pruning = 0;  // 0 when the set has no `prune`
   std::string recipe_hash;       // SHA-256 of the canonical resolved recipe (hex)
 };
 

@@ -1,6 +1,6 @@
 // modalstudy prune MODES.csv --method masking|naive|energy|loudness [--threshold-db A]
 //   [--playback-db L] [--combine max|sum] [--order naive|energy|loudness] [--keep K] [-o OUT.csv] [--json]
-// Masking-based mode pruning (analysis/masking_pruning.hpp); writes a progressive model on request.
+// Masking-based mode pruning (synthesis/masking_pruning.hpp); writes a progressive model on request.
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -10,7 +10,7 @@
 #include <iostream>
 #include <optional>
 
-#include "analysis/masking_pruning.hpp"
+#include "synthesis/masking_pruning.hpp"
 #include "studyapp/cli/commands.hpp"
 #include "synthesis/input_error.hpp"
 #include "synthesis/modes_csv.hpp"

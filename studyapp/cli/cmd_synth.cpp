@@ -45,6 +45,7 @@ void register_synth(CLI::App& app) {
       nlohmann::json j = {{"output", opt->output},       {"recipe_hash", p.recipe_hash},
                           {"sample_rate", p.sample_rate_hz}, {"frames", r.audio.frames()},
                           {"modes", r.modes_rendered},   {"level_gain", r.level_gain},
+                          {"modes_before_pruning", p.modes_before_pruning},
                           {"format", to_string(p.format)}, {"warnings", r.warnings}};
       std::cout << j.dump() << "\n";
     } else {

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <random>
 
-#include "analysis/bark.hpp"
-#include "analysis/masking_pruning.hpp"
+#include "synthesis/bark.hpp"
+#include "synthesis/masking_pruning.hpp"
 
 namespace {
 

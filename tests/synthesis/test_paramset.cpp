@@ -228,3 +228,28 @@ TEST(ParamSet, UnreadablePathsAreClear) {
   test::TempDir dir;
   EXPECT_THROW(load_paramset(dir.path().string()), InputError);  // a folder
 }
+
+TEST(ParamSet, PruneBlockAppliesTheMaskingRule) {
+  // Two modes a Bark apart and a weak third next to the strong one: the third is masked at a_v = 16.
+  const std::string base = R"(duration_s: 1
+modes:
+  - {freq_hz: 1000, decay_per_s: 5, amp: 1.0}
+  - {freq_hz: 1010, decay_per_s: 5, amp: 0.01}
+  - {freq_hz: 3000, decay_per_s: 5, amp: 0.5}
+)";
+  const ParamSet all = parse(base);
+  const ParamSet masked = parse(base + "prune: {method: masking, threshold_db: 16, order: energy}\n");
+  EXPECT_EQ(masked.modes_before_pruning, 3u);
+  ASSERT_EQ(masked.model.modes.size(), 2u);
+  EXPECT_EQ(masked.model.modes[0].freq_hz, 1000);  // energy order: strongest first
+  EXPECT_EQ(masked.model.modes[1].freq_hz, 3000);
+  EXPECT_NE(all.recipe_hash, masked.recipe_hash);
+  const ParamSet first = parse(base + "prune: {method: energy, keep: 1}\n");
+  ASSERT_EQ(first.model.modes.size(), 1u);
+  EXPECT_EQ(first.model.modes[0].freq_hz, 1000);
+  EXPECT_NE(error_of(base + "prune: {method: loud}\n").find("set.yaml:6:17: prune.method: unknown value 'loud'"),
+            std::string::npos)
+      << error_of(base + "prune: {method: loud}\n");
+  EXPECT_NE(error_of(base + "prune: {threshold_db: 99}\n").find("prune.threshold_db"), std::string::npos);
+  EXPECT_NE(error_of(base + "prune: {keep: 0}\n").find("at least 1"), std::string::npos);
+}

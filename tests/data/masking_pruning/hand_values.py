@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Expected numbers of tests/analysis/test_masking_pruning.cpp and tests/cli/test_prune_cli.cpp.
 
-An independent, literal O(N^2) transcription of the rule in analysis/masking_pruning.hpp (van den Doel,
+An independent, literal O(N^2) transcription of the rule in synthesis/masking_pruning.hpp (van den Doel,
 Pai et al. 2002) using only Python's math module. Run: python3 hand_values.py
 Prints, per case, the powers P, levels L, Bark z, masking thresholds T, thresholds in quiet Q and dB
 above the threshold A = L - max(T, Q), to 12 decimals.

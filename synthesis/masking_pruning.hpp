@@ -11,7 +11,7 @@
 //   masking    T_m = max_n M(n,m)                  (combine max: the upper envelope; the default)
 //                    10 log10 sum_n 10^(M(n,m)/10) (combine sum: maskings add in power)
 //              T_m = -inf when no other mode masks.
-//   quiet      Q_m = Terhardt's threshold in quiet at f_m (analysis/threshold_in_quiet.hpp)
+//   quiet      Q_m = Terhardt's threshold in quiet at f_m (synthesis/threshold_in_quiet.hpp)
 //   audible    P_m > 0 and L_m >= max(T_m, Q_m)   (inaudible = strictly below either)
 //   loudness   A_m = L_m - max(T_m, Q_m), dB above the masking threshold (finite, or -inf for amp 0)
 // Orderings, descending, ties by input index: naive = amp, energy = P, loudness = A.

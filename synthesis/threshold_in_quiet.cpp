@@ -1,4 +1,4 @@
-#include "analysis/threshold_in_quiet.hpp"
+#include "synthesis/threshold_in_quiet.hpp"
 
 #include <cmath>
 

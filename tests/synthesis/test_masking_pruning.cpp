@@ -1,4 +1,4 @@
-// Masking-based mode pruning (analysis/masking_pruning.hpp), Bark maps and the threshold in quiet.
+// Masking-based mode pruning (synthesis/masking_pruning.hpp), Bark maps and the threshold in quiet.
 // Expected numbers are worked by hand in the comments; their full digits come from an independent
 // transcription of the rule, tests/data/masking_pruning/hand_values.py (Python's math module only).
 //
@@ -11,9 +11,9 @@
 #include <limits>
 #include <random>
 
-#include "analysis/bark.hpp"
-#include "analysis/masking_pruning.hpp"
-#include "analysis/threshold_in_quiet.hpp"
+#include "synthesis/bark.hpp"
+#include "synthesis/masking_pruning.hpp"
+#include "synthesis/threshold_in_quiet.hpp"
 
 namespace ms {
 namespace {

@@ -1,4 +1,4 @@
-#include "analysis/bark.hpp"
+#include "synthesis/bark.hpp"
 
 #include <cmath>
 

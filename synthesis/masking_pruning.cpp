@@ -1,4 +1,4 @@
-#include "analysis/masking_pruning.hpp"
+#include "synthesis/masking_pruning.hpp"
 
 #include <algorithm>
 #include <array>
@@ -7,8 +7,8 @@
 #include <sstream>
 #include <utility>
 
-#include "analysis/bark.hpp"
-#include "analysis/threshold_in_quiet.hpp"
+#include "synthesis/bark.hpp"
+#include "synthesis/threshold_in_quiet.hpp"
 
 namespace ms {
 
