@@ -1,5 +1,6 @@
 #include "synthesis/effects.hpp"
 
+#include <cmath>
 #include <random>
 
 namespace ms {
@@ -45,6 +46,17 @@ void apply_doublets(ModalModel& model, const Doublets& doublets, const std::vect
     copy_gain(2);
   }
   model = std::move(out);
+}
+
+void add_background_noise(std::vector<float>& samples, const BackgroundNoise& noise) {
+  if (!noise.enabled || samples.empty()) return;
+  double power = 0.0;
+  for (float v : samples) power += double(v) * v;
+  power /= double(samples.size());
+  const double sigma = std::sqrt(power / std::pow(10.0, noise.snr_db / 10.0));
+  std::mt19937_64 rng(noise.seed);
+  std::normal_distribution<double> gauss(0.0, sigma);
+  for (float& v : samples) v = float(v + gauss(rng));
 }
 
 }  // namespace ms

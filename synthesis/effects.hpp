@@ -3,6 +3,7 @@
 //    of G = sum_k c_k Phi_k^T (mu I + (1 - mu) n n^T) Phi_k. Measured decay is then the material law
 //    plus a one-sided excess: here a constant, per-mode values, or exponential draws (seeded).
 //  - mode doublets: a degenerate pair split by imperfection into f (1 -+ split/2), which beats.
+//  - background noise: stationary white Gaussian noise at a given SNR, as in a real recording room.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -31,5 +32,14 @@ struct Doublets {
 // Replaces each mode selected by `orders` (circumferential order >= min_order; all modes when
 // orders is empty) by two modes, amplitudes (1 - balance) a and balance a.
 void apply_doublets(ModalModel& model, const Doublets& doublets, const std::vector<int>& orders);
+
+struct BackgroundNoise {
+  double snr_db = 0.0;     // signal power over the whole duration / noise power
+  std::uint64_t seed = 0;
+  bool enabled = false;
+};
+
+// Adds white Gaussian noise so that sum(y^2)/sum(noise^2) equals snr_db (seeded, reproducible).
+void add_background_noise(std::vector<float>& samples, const BackgroundNoise& noise);
 
 }  // namespace ms

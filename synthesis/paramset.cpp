@@ -368,7 +368,17 @@ ParamSet parse_paramset(const std::string& yaml_text, const std::string& file,
 
   if (root["effects"]) {
     const YAML::Node fx = root["effects"];
-    r.check_keys(fx, "effects", {"support_damping", "doublets"});
+    r.check_keys(fx, "effects", {"support_damping", "doublets", "noise"});
+    if (fx["noise"]) {
+      const YAML::Node n = fx["noise"];
+      r.check_keys(n, "effects.noise", {"snr_db", "seed"});
+      if (!n["snr_db"]) r.fail(n, "effects.noise", "needs 'snr_db'");
+      p.noise.snr_db = r.number(n["snr_db"], "effects.noise.snr_db");
+      if (p.noise.snr_db < -20 || p.noise.snr_db > 200)
+        r.fail(n["snr_db"], "effects.noise.snr_db", "must lie in [-20, 200] dB");
+      if (n["seed"]) p.noise.seed = std::uint64_t(r.integer(n["seed"], "effects.noise.seed"));
+      p.noise.enabled = true;
+    }
     if (fx["support_damping"]) {
       const YAML::Node s = fx["support_damping"];
       r.check_keys(s, "effects.support_damping",
@@ -505,6 +515,7 @@ std::string canonical_recipe(const ParamSet& p) {
   add("level %s %.17g %.17g\n", to_string(p.level.mode).c_str(), p.level.target_dbfs,
       p.level.attack_window_s);
   add("format %s\n", to_string(p.format).c_str());
+  if (p.noise.enabled) add("noise %.17g %llu\n", p.noise.snr_db, (unsigned long long)p.noise.seed);
   add("modes %zu\n", p.model.modes.size());
   for (const Mode& m : p.model.modes)
     add("%.17g %.17g %.17g %.17g\n", m.freq_hz, m.decay_per_s, m.amp, m.phase_rad);

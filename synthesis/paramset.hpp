@@ -20,6 +20,7 @@ struct ParamSet {
   ModalModel model;              // resolved modes, support damping and doublets applied
   Excitation excitation;
   OutputLevel level;
+  BackgroundNoise noise;         // added after rendering, before the output level
   SampleFormat format = SampleFormat::float32;
   std::string description;       // free text
   std::vector<std::string> warnings;  // e.g. overdamped modes dropped
