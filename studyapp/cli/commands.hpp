@@ -7,5 +7,6 @@ namespace ms::cli {
 void register_synth(CLI::App& app);
 void register_stimuli(CLI::App& app);
 void register_bench(CLI::App& app);
+void register_stats(CLI::App& app);
 
 }  // namespace ms::cli

@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   ms::cli::register_synth(app);
   ms::cli::register_stimuli(app);
   ms::cli::register_bench(app);
+  ms::cli::register_stats(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

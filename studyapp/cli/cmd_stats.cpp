@@ -1,0 +1,225 @@
+// modalstudy stats anova|ttest|confusion|mushra|ab|staircase ...: statistics of perceptual studies
+// from tidy CSV files (one row per response). Each prints a table, or one JSON object with --json.
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <optional>
+
+#include "analysis/rm_anova.hpp"
+#include "analysis/rm_data.hpp"
+#include "analysis/t_test.hpp"
+#include "analysis/tidy_csv.hpp"
+#include "studyapp/cli/commands.hpp"
+#include "synthesis/input_error.hpp"
+
+namespace ms::cli {
+
+namespace {
+
+nlohmann::json opt_json(const std::optional<double>& v) {
+  return v && std::isfinite(*v) ? nlohmann::json(*v) : nlohmann::json(nullptr);
+}
+
+nlohmann::json num_json(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+std::vector<std::string> split_commas(const std::vector<std::string>& args) {
+  std::vector<std::string> out;
+  for (const auto& a : args) {
+    std::size_t start = 0;
+    for (;;) {
+      const auto comma = a.find(',', start);
+      const std::string part = a.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+      if (!part.empty()) out.push_back(part);
+      if (comma == std::string::npos) break;
+      start = comma + 1;
+    }
+  }
+  return out;
+}
+
+std::string fmt(const char* f, double v) {
+  if (!std::isfinite(v)) return "NA";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+// p as published tables print it: "< .001" below 0.001, else three significant digits.
+std::string fmt_p(double p) {
+  if (!std::isfinite(p)) return "NA";
+  if (p < 0.001) return "< .001";
+  return fmt("%.3g", p);
+}
+
+void print_notices(const std::vector<std::string>& notices, const std::string& file) {
+  for (const auto& n : notices) std::cerr << "notice: " << file << ": " << n << "\n";
+}
+
+void register_anova(CLI::App& group) {
+  struct Options {
+    std::string data, dv, subject;
+    std::vector<std::string> within, between;
+    bool json = false;
+  };
+  auto opt = std::make_shared<Options>();
+  CLI::App* cmd = group.add_subcommand(
+      "anova", "Repeated-measures ANOVA (type III; GG/HF corrections, Mauchly, ges/pes), as afex::aov_ez");
+  cmd->add_option("data", opt->data, "Tidy CSV, one row per observation")->required();
+  cmd->add_option("--dv", opt->dv, "Column of the dependent variable (numeric)")->required();
+  cmd->add_option("--subject", opt->subject, "Column identifying the subject (listener)")->required();
+  cmd->add_option("--within", opt->within, "Within-subject factor columns, comma separated")->required();
+  cmd->add_option("--between", opt->between, "Between-subject factor column(s)");
+  cmd->add_flag("--json", opt->json, "Print one JSON object");
+  cmd->callback([opt] {
+    const TidyCsv table = TidyCsv::read(opt->data);
+    std::vector<std::string> notices;
+    const RmData data = rm_data_from_table(
+        table, RmColumns{opt->dv, opt->subject, split_commas(opt->within), split_commas(opt->between)}, notices);
+    const RmAnova a = rm_anova(data);
+    print_notices(notices, opt->data);
+    if (opt->json) {
+      nlohmann::json effects = nlohmann::json::array();
+      for (const auto& e : a.effects)
+        effects.push_back({{"effect", e.name},      {"df1", e.df1},
+                           {"df2", e.df2},          {"F", num_json(e.F)},
+                           {"p", num_json(e.p)},    {"eps_gg", opt_json(e.eps_gg)},
+                           {"p_gg", num_json(e.p_gg)}, {"eps_hf", opt_json(e.eps_hf)},
+                           {"p_hf", num_json(e.p_hf)}, {"ges", num_json(e.ges)},
+                           {"pes", num_json(e.pes)}, {"mauchly_w", opt_json(e.mauchly_w)},
+                           {"mauchly_p", opt_json(e.mauchly_p)}, {"ss", e.ss},
+                           {"ss_error", e.ss_error}});
+      std::cout << nlohmann::json{{"effects", effects}, {"n_subjects", a.n_subjects}, {"notices", notices}}.dump()
+                << "\n";
+      return;
+    }
+    std::printf("Repeated-measures ANOVA of %s (%zu subjects; type III SS)\n", opt->dv.c_str(), a.n_subjects);
+    std::printf("%-24s %5s %6s %10s %8s %7s %7s %7s\n", "Effect", "Df1", "Df2", "F value", "Pr(>F)", "GG eps",
+                "HF eps", "ges");
+    for (const auto& e : a.effects)
+      std::printf("%-24s %5.0f %6.0f %10.4g %8s %7s %7s %7.4f\n", e.name.c_str(), e.df1, e.df2, e.F,
+                  fmt_p(e.p).c_str(), e.eps_gg ? fmt("%.4f", *e.eps_gg).c_str() : "",
+                  e.eps_hf ? fmt("%.4f", *e.eps_hf).c_str() : "", e.ges);
+    bool any_mauchly = false;
+    for (const auto& e : a.effects) any_mauchly |= e.mauchly_w.has_value();
+    if (any_mauchly) {
+      std::printf("\nMauchly's test for sphericity\n%-24s %10s %8s\n", "Effect", "W", "p");
+      for (const auto& e : a.effects)
+        if (e.mauchly_w) std::printf("%-24s %10.5f %8s\n", e.name.c_str(), *e.mauchly_w, fmt_p(*e.mauchly_p).c_str());
+    }
+  });
+}
+
+void register_ttest(CLI::App& group) {
+  struct Options {
+    std::string data, dv, group_col, subject;
+    bool paired = false, student = false, json = false;
+    double conf_level = 0.95;
+  };
+  auto opt = std::make_shared<Options>();
+  CLI::App* cmd = group.add_subcommand("ttest", "Two-sample t-test: Welch (default), Student or paired, as R's t.test");
+  cmd->add_option("data", opt->data, "Tidy CSV, one row per observation")->required();
+  cmd->add_option("--dv", opt->dv, "Column of the dependent variable")->required();
+  cmd->add_option("--group", opt->group_col, "Column with exactly two levels; the difference is first - second "
+                                              "(in order of first appearance)")->required();
+  cmd->add_flag("--paired", opt->paired, "Paired test; pairs matched by --subject");
+  cmd->add_option("--subject", opt->subject, "Column identifying the subject (for --paired)");
+  cmd->add_flag("--student", opt->student, "Pooled-variance (Student) test instead of Welch");
+  cmd->add_option("--conf-level", opt->conf_level, "Confidence level of the interval")->check(CLI::Range(0.5, 0.9999));
+  cmd->add_flag("--json", opt->json, "Print one JSON object");
+  cmd->callback([opt] {
+    const TidyCsv table = TidyCsv::read(opt->data);
+    const std::size_t col_dv = table.column(opt->dv), col_g = table.column(opt->group_col);
+    if (opt->paired && opt->subject.empty()) throw InputError(SourceLocation{}, "--paired needs --subject COL");
+    const std::size_t col_s = opt->paired ? table.column(opt->subject) : 0;
+    if (table.rows() == 0) throw InputError(SourceLocation{table.file(), 0, 0}, "no data rows");
+    std::vector<std::string> levels;
+    std::vector<std::vector<double>> values(2);
+    // Paired: mean per (subject, level), as afex aggregates; subjects in order of first appearance.
+    std::vector<std::string> subjects;
+    std::map<std::string, std::size_t> subject_index;
+    std::vector<std::array<double, 2>> sums;
+    std::vector<std::array<int, 2>> counts;
+    std::vector<std::size_t> subject_row;
+    for (std::size_t r = 0; r < table.rows(); ++r) {
+      const double v = table.number(r, col_dv);
+      const std::string& g = table.cell(r, col_g);
+      std::size_t k = 0;
+      while (k < levels.size() && levels[k] != g) ++k;
+      if (k == levels.size()) {
+        if (levels.size() == 2)
+          throw InputError(table.where(r, col_g), "column '" + opt->group_col + "': a third level '" + g +
+                                                      "' (a t-test compares exactly two)");
+        levels.push_back(g);
+      }
+      if (!opt->paired) {
+        values[k].push_back(v);
+        continue;
+      }
+      auto [it, added] = subject_index.try_emplace(table.cell(r, col_s), subjects.size());
+      if (added) {
+        subjects.push_back(table.cell(r, col_s));
+        sums.push_back({0, 0});
+        counts.push_back({0, 0});
+        subject_row.push_back(r);
+      }
+      sums[it->second][k] += v;
+      counts[it->second][k] += 1;
+    }
+    if (levels.size() < 2)
+      throw InputError(table.where(0, col_g), "column '" + opt->group_col + "' has a single level; need two");
+    std::vector<std::string> notices;
+    TTest t;
+    if (opt->paired) {
+      bool averaged = false;
+      for (std::size_t s = 0; s < subjects.size(); ++s) {
+        for (int k = 0; k < 2; ++k) {
+          if (counts[s][std::size_t(k)] == 0)
+            throw InputError(table.where(subject_row[s], col_s), "subject '" + subjects[s] + "' has no observation for " +
+                                                                     opt->group_col + "=" + levels[std::size_t(k)]);
+          averaged |= counts[s][std::size_t(k)] > 1;
+          values[std::size_t(k)].push_back(sums[s][std::size_t(k)] / counts[s][std::size_t(k)]);
+        }
+      }
+      if (averaged) notices.push_back("more than one observation per subject and level; aggregating with the mean");
+      if (subjects.size() < 2) throw InputError(table.where(0, col_s), "a paired t-test needs at least two subjects");
+      t = paired_t_test(values[0], values[1], opt->conf_level);
+    } else {
+      for (int k = 0; k < 2; ++k)
+        if (values[std::size_t(k)].size() < 2)
+          throw InputError(table.where(0, col_g), "level '" + levels[std::size_t(k)] + "' has fewer than two observations");
+      t = opt->student ? student_t_test(values[0], values[1], opt->conf_level)
+                       : welch_t_test(values[0], values[1], opt->conf_level);
+    }
+    print_notices(notices, opt->data);
+    const std::string method = opt->paired ? "paired" : opt->student ? "student" : "welch";
+    if (opt->json) {
+      std::cout << nlohmann::json{{"method", method},          {"levels", levels},
+                                  {"n", {values[0].size(), values[1].size()}},
+                                  {"t", num_json(t.t)},         {"df", num_json(t.df)},
+                                  {"p", num_json(t.p)},         {"mean_diff", t.mean_diff},
+                                  {"se", t.se},                 {"ci", {num_json(t.ci_low), num_json(t.ci_high)}},
+                                  {"conf_level", t.conf_level}, {"notices", notices}}
+                       .dump()
+                << "\n";
+      return;
+    }
+    std::printf("%s t-test of %s: %s - %s\n", method.c_str(), opt->dv.c_str(), levels[0].c_str(), levels[1].c_str());
+    std::printf("t = %.4f, df = %.4g, p = %s\nmean difference %.6g, %.0f%% CI [%.6g, %.6g]\n", t.t, t.df,
+                fmt("%.4g", t.p).c_str(), t.mean_diff, 100 * t.conf_level, t.ci_low, t.ci_high);
+  });
+}
+
+}  // namespace
+
+void register_stats(CLI::App& app) {
+  CLI::App* group = app.add_subcommand("stats", "Statistics of perceptual studies from tidy CSV files");
+  group->require_subcommand(1);
+  register_anova(*group);
+  register_ttest(*group);
+}
+
+}  // namespace ms::cli
