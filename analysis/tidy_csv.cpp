@@ -1,5 +1,6 @@
 #include "analysis/tidy_csv.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -125,10 +126,13 @@ TidyCsv TidyCsv::parse(const std::string& text, const std::string& file) {
   }
   for (std::size_t r = 1; r < records.size(); ++r) {
     auto& rec = records[r];
-    if (rec.cells.size() != t.header_.size())
-      throw InputError(SourceLocation{file, rec.positions.front().first, 0},
+    if (rec.cells.size() != t.header_.size()) {
+      // Too many: point at the first extra cell; too few: at the start of the row.
+      const auto& at = rec.positions[std::min(rec.cells.size(), t.header_.size()) % rec.cells.size()];
+      throw InputError(SourceLocation{file, at.first, at.second},
                        "expected " + std::to_string(t.header_.size()) + " cells (as in the header), got " +
                            std::to_string(rec.cells.size()));
+    }
     t.cells_.push_back(std::move(rec.cells));
     t.positions_.push_back(std::move(rec.positions));
   }
