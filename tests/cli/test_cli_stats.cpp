@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <fstream>
 
 #include "analysis/tidy_csv.hpp"
 #include "support/test_util.hpp"
@@ -131,4 +132,64 @@ TEST(CliStatsTTest, JsonEqualsRGolden) {
     expect_rel(hi, golden.number(i, golden.column("ci_high")), tag + " ci_high");
     if (i == 0) EXPECT_EQ(j["notices"].size(), 1u);
   }
+}
+
+TEST(CliStatsConfusion, CompareJsonEqualsSklearnGolden) {
+  test::TempDir dir;
+  std::ifstream in(kData + "confusion/golden.json");
+  const auto g = nlohmann::json::parse(in);
+  const std::string d = kData + "confusion/";
+  const auto r = test::run_cli("stats confusion " + d + "responses_recorded.csv --truth material --response answer "
+                               "--labels wood,plastic,metal,porcelain,glass --compare " + d +
+                               "responses_synthesised.csv --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["labels"], g["labels"]);
+  EXPECT_EQ(j["counts"], g["recorded"]["counts"]);
+  EXPECT_EQ(j["compare"]["counts"], g["synthesised"]["counts"]);
+  for (const char* key : {"accuracy", "kappa", "chi2"}) {
+    expect_rel(j[key].get<double>(), g["recorded"][key].get<double>(), key);
+    expect_rel(j["compare"][key].get<double>(), g["synthesised"][key].get<double>(), key);
+  }
+  EXPECT_EQ(j["chi2_df"], g["recorded"]["chi2_df"]);
+  for (std::size_t i = 0; i < 5; ++i)
+    for (std::size_t k = 0; k < 5; ++k)
+      expect_rel(j["row_percent"][i][k].get<double>(), g["recorded"]["row_percent"][i][k].get<double>(), "pct");
+  expect_rel(j["frobenius"].get<double>(), g["recorded_vs_synthesised"]["frobenius"].get<double>(), "frobenius");
+  for (std::size_t i = 0; i < 5; ++i) {
+    expect_rel(j["recall_diff"][i]["ci_low"].get<double>(),
+               g["recorded_vs_synthesised"]["recall_diff_ci"][i][0].get<double>(), "ci_low");
+    expect_rel(j["recall_diff"][i]["ci_high"].get<double>(),
+               g["recorded_vs_synthesised"]["recall_diff_ci"][i][1].get<double>(), "ci_high");
+  }
+}
+
+TEST(CliStatsConfusion, DefaultLabelsAreSortedAndTablePrints) {
+  test::TempDir dir;
+  const auto r = test::run_cli("stats confusion " + kData + "confusion/responses_recorded.csv --truth material "
+                               "--response answer", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("Cohen's kappa"), std::string::npos);
+  // Sorted labels: glass first; the glass row of the golden counts is its last row.
+  const auto j = nlohmann::json::parse(
+      test::run_cli("stats confusion " + kData + "confusion/responses_recorded.csv --truth material --response answer --json",
+                    dir).out);
+  EXPECT_EQ(j["labels"][0], "glass");
+  EXPECT_EQ(j["labels"][4], "wood");
+  std::ifstream in(kData + "confusion/golden.json");
+  const auto g = nlohmann::json::parse(in);
+  EXPECT_EQ(j["counts"][0][0], g["recorded"]["counts"][4][4]);  // glass -> glass
+}
+
+TEST(CliStatsConfusion, BadInput) {
+  test::TempDir dir;
+  const std::string f = dir.write("r.csv", "listener,material,answer\nL1,wood,wood\nL1,metal,gold\n");
+  const BadCase cases[] = {
+      {"stats confusion " + f + " --truth material --response reply", "r.csv:1:1: missing column 'reply'"},
+      {"stats confusion " + f + " --truth material --response answer --labels wood,metal",
+       "r.csv:3:10: column 'answer': label 'gold' is not in --labels"},
+      {"stats confusion " + f + " --truth material --response answer --compare " + dir.file("none.csv"),
+       "none.csv: no such file"},
+  };
+  for (const auto& c : cases) expect_bad(dir, c);
 }
