@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "analysis/confusion.hpp"
+#include "analysis/mushra.hpp"
 #include "analysis/rm_anova.hpp"
 #include "analysis/rm_data.hpp"
 #include "analysis/t_test.hpp"
@@ -351,6 +352,135 @@ void register_confusion(CLI::App& group) {
   });
 }
 
+// The first of `candidates` the table has, or the explicit choice when given.
+std::size_t pick_column(const TidyCsv& table, const std::string& chosen, const std::vector<std::string>& candidates) {
+  if (!chosen.empty()) return table.column(chosen);
+  for (const auto& c : candidates)
+    if (table.has_column(c)) return table.column(c);
+  std::string names;
+  for (const auto& c : candidates) names += (names.empty() ? "'" : " or '") + c + "'";
+  throw InputError(SourceLocation{table.file(), 1, 1}, "missing column " + names);
+}
+
+nlohmann::json stat_json(const MushraStat& s) {
+  return {{"condition", s.condition}, {"n", s.n}, {"mean", s.mean}, {"sd", s.n >= 2 ? nlohmann::json(s.sd) : nullptr},
+          {"ci_low", opt_json(s.ci_low)}, {"ci_high", opt_json(s.ci_high)}};
+}
+
+void register_mushra(CLI::App& group) {
+  struct Options {
+    std::string data, subject, item, condition, rating;
+    MushraOptions m;
+    bool anchors_given = false, json = false;
+  };
+  auto opt = std::make_shared<Options>();
+  CLI::App* cmd = group.add_subcommand(
+      "mushra", "MUSHRA (ITU-R BS.1534-3): post-screening of assessors, means and 95% CIs per condition and item");
+  cmd->add_option("data", opt->data, "Tidy CSV, one row per rating (webMUSHRA column names accepted)")->required();
+  cmd->add_option("--subject", opt->subject, "Assessor column (default: participant, subject or session_uuid)");
+  cmd->add_option("--item", opt->item, "Item column (default: trial, item or trial_id)");
+  cmd->add_option("--condition", opt->condition, "Condition column (default: condition or rating_stimulus)");
+  cmd->add_option("--rating", opt->rating, "Rating column, 0-100 (default: rating or rating_score)");
+  cmd->add_option("--reference", opt->m.reference, "Name of the hidden-reference condition")->capture_default_str();
+  cmd->add_option("--anchor", opt->m.anchors, "Anchor condition(s) to check (default: conditions named anchor*)");
+  cmd->add_flag("--screen-anchors", opt->m.screen_anchors,
+                "Also exclude assessors rating an anchor above 90 in more than 15% of items");
+  cmd->add_option("--conf-level", opt->m.conf_level, "Confidence level")->check(CLI::Range(0.5, 0.9999));
+  cmd->add_flag("--json", opt->json, "Print one JSON object");
+  cmd->callback([opt] {
+    const TidyCsv table = TidyCsv::read(opt->data);
+    const std::size_t cs = pick_column(table, opt->subject, {"participant", "subject", "session_uuid"});
+    const std::size_t ci = pick_column(table, opt->item, {"trial", "item", "trial_id"});
+    const std::size_t cc = pick_column(table, opt->condition, {"condition", "rating_stimulus"});
+    const std::size_t cr = pick_column(table, opt->rating, {"rating", "rating_score"});
+    if (table.rows() == 0) throw InputError(SourceLocation{table.file(), 0, 0}, "no data rows");
+    std::vector<MushraRating> ratings;
+    std::set<std::string> conditions;
+    for (std::size_t r = 0; r < table.rows(); ++r) {
+      const double v = table.number(r, cr);
+      if (v < 0 || v > 100)
+        throw InputError(table.where(r, cr), "column '" + table.header()[cr] + "': rating " + table.cell(r, cr) +
+                                                 " outside the MUSHRA scale 0-100");
+      for (std::size_t c : {cs, ci, cc})
+        if (table.cell(r, c).empty()) throw InputError(table.where(r, c), "column '" + table.header()[c] + "': empty");
+      ratings.push_back(MushraRating{table.cell(r, cs), table.cell(r, ci), table.cell(r, cc), v});
+      conditions.insert(table.cell(r, cc));
+    }
+    auto where_condition = SourceLocation{table.file(), 1, 1};
+    if (!conditions.count(opt->m.reference))
+      throw InputError(where_condition, "no condition named '" + opt->m.reference +
+                                            "' in column '" + table.header()[cc] + "' (name the hidden reference with --reference)");
+    if (opt->m.anchors.empty()) {
+      for (const auto& c : conditions)
+        if (c.rfind("anchor", 0) == 0) opt->m.anchors.push_back(c);
+    } else {
+      for (const auto& a : opt->m.anchors)
+        if (!conditions.count(a))
+          throw InputError(where_condition, "--anchor: no condition named '" + a + "' in column '" + table.header()[cc] + "'");
+    }
+    const MushraResult res = mushra_analyse(ratings, opt->m);
+    std::vector<std::string> notices;
+    if (res.averaged)
+      notices.push_back(std::to_string(res.averaged) +
+                        " assessor/item/condition cells were rated more than once; their ratings are averaged");
+    if (res.included == 0) notices.push_back("every assessor was excluded by post-screening; no statistics");
+    print_notices(notices, opt->data);
+    if (opt->json) {
+      nlohmann::json assessors = nlohmann::json::array(), conds = nlohmann::json::array(), items = nlohmann::json::array();
+      for (const auto& a : res.assessors) {
+        nlohmann::json checks = nlohmann::json::array();
+        for (const auto& k : a.anchors)
+          checks.push_back({{"anchor", k.anchor}, {"items", k.items}, {"above", k.above},
+                            {"fraction", k.items ? nlohmann::json(double(k.above) / double(k.items)) : nullptr},
+                            {"fails", k.fails}});
+        assessors.push_back({{"subject", a.subject}, {"reference_items", a.reference_items},
+                             {"reference_below", a.reference_below},
+                             {"reference_fraction", a.reference_items ? nlohmann::json(double(a.reference_below) /
+                                                                                        double(a.reference_items))
+                                                                      : nullptr},
+                             {"reference_fails", a.reference_fails}, {"anchor_checks", checks},
+                             {"anchor_fails", a.anchor_fails}, {"excluded", a.excluded}});
+      }
+      for (const auto& c : res.conditions) conds.push_back(stat_json(c));
+      for (const auto& it : res.items) {
+        nlohmann::json ic = nlohmann::json::array();
+        for (const auto& c : it.conditions) ic.push_back(stat_json(c));
+        items.push_back({{"item", it.item}, {"conditions", ic}});
+      }
+      std::cout << nlohmann::json{{"reference", opt->m.reference}, {"anchors", opt->m.anchors},
+                                  {"n_assessors", res.assessors.size()}, {"n_included", res.included},
+                                  {"conf_level", opt->m.conf_level}, {"assessors", assessors},
+                                  {"conditions", conds}, {"items", items}, {"notices", notices}}
+                       .dump()
+                << "\n";
+      return;
+    }
+    std::printf("MUSHRA post-screening (ITU-R BS.1534-3): %zu of %zu assessors kept\n", res.included,
+                res.assessors.size());
+    for (const auto& a : res.assessors) {
+      std::string why;
+      if (a.reference_fails)
+        why += "reference < 90 in " + std::to_string(a.reference_below) + "/" + std::to_string(a.reference_items) + " items";
+      for (const auto& k : a.anchors)
+        if (k.fails)
+          why += (why.empty() ? "" : "; ") + k.anchor + " > 90 in " + std::to_string(k.above) + "/" +
+                 std::to_string(k.items) + " items";
+      if (!why.empty()) std::printf("  %-12s %s: %s\n", a.subject.c_str(), a.excluded ? "excluded" : "flagged", why.c_str());
+    }
+    std::printf("\n%-16s %5s %8s %8s %17s\n", "Condition", "n", "mean", "sd", "95% CI");
+    for (const auto& c : res.conditions)
+      std::printf("%-16s %5zu %8.2f %8.2f   [%6.2f, %6.2f]\n", c.condition.c_str(), c.n, c.mean, c.sd,
+                  c.ci_low.value_or(NAN), c.ci_high.value_or(NAN));
+    std::printf("\nPer item (mean [95%% CI])\n");
+    for (const auto& it : res.items) {
+      std::printf("%s\n", it.item.c_str());
+      for (const auto& c : it.conditions)
+        std::printf("  %-14s %7.2f [%6.2f, %6.2f]\n", c.condition.c_str(), c.mean, c.ci_low.value_or(NAN),
+                    c.ci_high.value_or(NAN));
+    }
+  });
+}
+
 }  // namespace
 
 void register_stats(CLI::App& app) {
@@ -359,6 +489,7 @@ void register_stats(CLI::App& app) {
   register_anova(*group);
   register_ttest(*group);
   register_confusion(*group);
+  register_mushra(*group);
 }
 
 }  // namespace ms::cli

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 
@@ -190,6 +191,46 @@ TEST(CliStatsConfusion, BadInput) {
        "r.csv:3:10: column 'answer': label 'gold' is not in --labels"},
       {"stats confusion " + f + " --truth material --response answer --compare " + dir.file("none.csv"),
        "none.csv: no such file"},
+  };
+  for (const auto& c : cases) expect_bad(dir, c);
+}
+
+TEST(CliStatsMushra, JsonEqualsRGolden) {
+  test::TempDir dir;
+  const auto r = test::run_cli("stats mushra " + kData + "mushra/results.csv --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["n_assessors"], 12);
+  EXPECT_EQ(j["n_included"], 11);
+  EXPECT_EQ(j["anchors"].size(), 2u);  // anchor35, anchor70 found by name
+  for (const auto& a : j["assessors"]) {
+    EXPECT_EQ(a["excluded"].get<bool>(), a["subject"] == "P03") << a;
+    EXPECT_EQ(a["anchor_fails"].get<bool>(), a["subject"] == "P09") << a;
+  }
+  const TidyCsv golden = TidyCsv::read(kData + "mushra/summary_golden.csv");
+  for (std::size_t i = 0; i < 6; ++i) {  // the ALL rows
+    const auto& c = *std::find_if(j["conditions"].begin(), j["conditions"].end(),
+                                  [&](const auto& x) { return x["condition"] == golden.cell(i, 1); });
+    for (const char* key : {"mean", "sd", "ci_low", "ci_high"})
+      expect_rel(c[key].get<double>(), golden.number(i, golden.column(key)), golden.cell(i, 1) + " " + key);
+  }
+  EXPECT_EQ(j["items"].size(), 8u);
+  EXPECT_EQ(j["notices"].size(), 1u);
+  // --screen-anchors also drops the assessor who rated the mid anchor above 90.
+  const auto s = nlohmann::json::parse(
+      test::run_cli("stats mushra " + kData + "mushra/results.csv --anchor anchor70 --screen-anchors --json", dir).out);
+  EXPECT_EQ(s["n_included"], 10);
+}
+
+TEST(CliStatsMushra, BadInput) {
+  test::TempDir dir;
+  const std::string f = dir.write("m.csv", "participant,trial,condition,rating\nP1,t1,reference,100\nP1,t1,codec,101\n");
+  const std::string g = dir.write("n.csv", "participant,trial,condition,rating\nP1,t1,ref,100\nP1,t1,codec,50\n");
+  const BadCase cases[] = {
+      {"stats mushra " + f, "m.csv:3:13: column 'rating': rating 101 outside the MUSHRA scale 0-100"},
+      {"stats mushra " + g, "n.csv:1:1: no condition named 'reference'"},
+      {"stats mushra " + g + " --reference ref --anchor lp", "--anchor: no condition named 'lp'"},
+      {"stats mushra " + f + " --rating score", "m.csv:1:1: missing column 'score'"},
   };
   for (const auto& c : cases) expect_bad(dir, c);
 }
