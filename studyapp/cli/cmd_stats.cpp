@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -11,10 +12,13 @@
 #include <set>
 #include <optional>
 
+#include "analysis/binomial_test.hpp"
 #include "analysis/confusion.hpp"
 #include "analysis/mushra.hpp"
 #include "analysis/rm_anova.hpp"
 #include "analysis/rm_data.hpp"
+#include "analysis/signal_detection.hpp"
+#include "analysis/staircase.hpp"
 #include "analysis/t_test.hpp"
 #include "analysis/tidy_csv.hpp"
 #include "studyapp/cli/commands.hpp"
@@ -481,6 +485,244 @@ void register_mushra(CLI::App& group) {
   });
 }
 
+// Rows grouped by the value of an optional column, groups in order of first appearance.
+std::vector<std::pair<std::string, std::vector<std::size_t>>> group_rows(const TidyCsv& table,
+                                                                         const std::vector<std::string>& by) {
+  std::vector<std::size_t> cols;
+  for (const auto& b : by) cols.push_back(table.column(b));
+  std::vector<std::pair<std::string, std::vector<std::size_t>>> groups;
+  std::map<std::string, std::size_t> index;
+  for (std::size_t r = 0; r < table.rows(); ++r) {
+    std::string key;
+    for (std::size_t c : cols) key += (key.empty() ? "" : "/") + table.cell(r, c);
+    auto [it, added] = index.try_emplace(key, groups.size());
+    if (added) groups.push_back({key, {}});
+    groups[it->second].second.push_back(r);
+  }
+  return groups;
+}
+
+std::string lower_case(std::string s) {
+  for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+bool parse_correct(const TidyCsv& table, std::size_t r, std::size_t c) {
+  const std::string v = lower_case(table.cell(r, c));
+  if (v == "1" || v == "true" || v == "yes" || v == "correct") return true;
+  if (v == "0" || v == "false" || v == "no" || v == "incorrect") return false;
+  throw InputError(table.where(r, c), "column '" + table.header()[c] + "': expected 1/0, true/false, yes/no or "
+                                      "correct/incorrect, got '" + table.cell(r, c) + "'");
+}
+
+void register_ab(CLI::App& group) {
+  struct Options {
+    std::string data, task = "2afc", correct, stimulus, response, target, yes, choice, score;
+    std::vector<std::string> by, options;
+    double chance = 0.5, conf_level = 0.95;
+    bool json = false;
+  };
+  auto opt = std::make_shared<Options>();
+  CLI::App* cmd = group.add_subcommand(
+      "ab", "A/B blocks: proportion correct, exact binomial test, d' (2AFC, ABX, yes-no, same-different), preference");
+  cmd->add_option("data", opt->data, "Tidy CSV, one row per trial")->required();
+  cmd->add_option("--task", opt->task, "2afc | abx | yesno | same-different | preference")
+      ->check(CLI::IsMember({"2afc", "abx", "yesno", "same-different", "preference"}))
+      ->capture_default_str();
+  cmd->add_option("--by", opt->by, "Column(s) to group by (e.g. participant, condition)");
+  cmd->add_option("--correct", opt->correct, "2afc/abx: column saying whether the answer was correct");
+  cmd->add_option("--stimulus", opt->stimulus, "yesno/same-different: column of the presented trial type");
+  cmd->add_option("--response", opt->response, "yesno/same-different: column of the answer");
+  cmd->add_option("--target", opt->target, "Stimulus value of signal trials (default: signal | different)");
+  cmd->add_option("--yes", opt->yes, "Response value meaning yes/different (default: yes | different)");
+  cmd->add_option("--choice", opt->choice, "preference: column of the chosen option");
+  cmd->add_option("--options", opt->options, "preference: the two options, comma separated; other values are ties");
+  cmd->add_option("--score", opt->score, "preference: column of a graded score (e.g. -3..+3), tested against 0");
+  cmd->add_option("--chance", opt->chance, "Chance proportion for 2afc/abx")->check(CLI::Range(0.0, 1.0));
+  cmd->add_option("--conf-level", opt->conf_level, "Confidence level")->check(CLI::Range(0.5, 0.9999));
+  cmd->add_flag("--json", opt->json, "Print one JSON object");
+  cmd->callback([opt] {
+    const TidyCsv table = TidyCsv::read(opt->data);
+    if (table.rows() == 0) throw InputError(SourceLocation{table.file(), 0, 0}, "no data rows");
+    auto need = [&](const std::string& v, const char* flag) {
+      if (v.empty()) throw InputError(SourceLocation{}, "--task " + opt->task + " needs " + flag + " COL");
+      return table.column(v);
+    };
+    std::vector<std::string> notices;
+    nlohmann::json groups = nlohmann::json::array();
+    const bool forced = opt->task == "2afc" || opt->task == "abx";
+    const bool detection = opt->task == "yesno" || opt->task == "same-different";
+    // Resolve columns before grouping so a missing one is reported first.
+    std::size_t c_correct = 0, c_stim = 0, c_resp = 0, c_choice = 0, c_score = 0;
+    if (forced) c_correct = need(opt->correct, "--correct");
+    if (detection) {
+      c_stim = need(opt->stimulus, "--stimulus");
+      c_resp = need(opt->response, "--response");
+    }
+    std::vector<std::string> pref_options = split_commas(opt->options);
+    if (opt->task == "preference") {
+      if (opt->choice.empty() && opt->score.empty())
+        throw InputError(SourceLocation{}, "--task preference needs --choice COL and/or --score COL");
+      if (!opt->choice.empty()) {
+        c_choice = table.column(opt->choice);
+        if (pref_options.size() != 2)
+          throw InputError(SourceLocation{}, "--options: name exactly the two options, e.g. --options A,B");
+      }
+      if (!opt->score.empty()) c_score = table.column(opt->score);
+    }
+    const std::string target = !opt->target.empty() ? opt->target : opt->task == "yesno" ? "signal" : "different";
+    const std::string yes = !opt->yes.empty() ? opt->yes : opt->task == "yesno" ? "yes" : "different";
+    bool corrected_any = false;
+    for (const auto& [name, rows] : group_rows(table, opt->by)) {
+      nlohmann::json g = {{"group", name}, {"n", rows.size()}};
+      if (forced) {
+        unsigned k = 0;
+        for (std::size_t r : rows) k += parse_correct(table, r, c_correct);
+        const unsigned n = unsigned(rows.size());
+        const BinomialTest above = binomial_test(k, n, opt->chance, Alternative::greater, opt->conf_level);
+        const BinomialTest two = binomial_test(k, n, opt->chance, Alternative::two_sided, opt->conf_level);
+        const double pc = corrected_rate(k, n);
+        corrected_any |= k == 0 || k == n;
+        g.update({{"correct", k}, {"pc", double(k) / n}, {"p_above_chance", above.p}, {"p_two_sided", two.p},
+                  {"ci_low", two.ci_low}, {"ci_high", two.ci_high},
+                  {"dprime", opt->task == "2afc" ? dprime_2afc(pc) : dprime_abx(pc)}});
+      } else if (detection) {
+        double hits = 0, signal = 0, fas = 0, noise = 0;
+        for (std::size_t r : rows) {
+          const bool is_signal = table.cell(r, c_stim) == target;
+          const bool said_yes = table.cell(r, c_resp) == yes;
+          (is_signal ? signal : noise) += 1;
+          (is_signal ? hits : fas) += said_yes;
+        }
+        if (signal == 0 || noise == 0)
+          throw InputError(table.where(rows.front(), c_stim),
+                           "group '" + name + "' needs both '" + target + "' trials and others in column '" +
+                               table.header()[c_stim] + "'");
+        corrected_any |= hits == 0 || hits == signal || fas == 0 || fas == noise;
+        const double h = corrected_rate(hits, signal), f = corrected_rate(fas, noise);
+        g.update({{"hits", hits}, {"signal_trials", signal}, {"false_alarms", fas}, {"noise_trials", noise},
+                  {"hit_rate", hits / signal}, {"false_alarm_rate", fas / noise}});
+        if (opt->task == "yesno") {
+          g["dprime"] = dprime_yes_no(h, f);
+          g["criterion_c"] = -(normal_quantile(h) + normal_quantile(f)) / 2;
+        } else {
+          const SameDifferent sd = dprime_same_different(h, f);
+          g["dprime"] = sd.dprime;
+          g["criterion_k"] = sd.criterion_k;
+        }
+      } else {
+        if (!opt->choice.empty()) {
+          unsigned a = 0, b = 0, ties = 0;
+          for (std::size_t r : rows) {
+            const std::string& v = table.cell(r, c_choice);
+            if (v == pref_options[0]) ++a;
+            else if (v == pref_options[1]) ++b;
+            else ++ties;
+          }
+          g.update({{"prefer", {{pref_options[0], a}, {pref_options[1], b}}}, {"ties", ties}});
+          if (a + b > 0) {
+            const BinomialTest t = binomial_test(a, a + b, 0.5, Alternative::two_sided, opt->conf_level);
+            g.update({{"proportion_first", t.proportion}, {"p", t.p}, {"ci_low", t.ci_low}, {"ci_high", t.ci_high}});
+          }
+        }
+        if (!opt->score.empty()) {
+          std::vector<double> scores, zeros;
+          for (std::size_t r : rows) scores.push_back(table.number(r, c_score));
+          zeros.assign(scores.size(), 0.0);
+          if (scores.size() >= 2) {
+            const TTest t = paired_t_test(scores, zeros, opt->conf_level);
+            g["score"] = {{"mean", t.mean_diff}, {"t", num_json(t.t)}, {"df", t.df}, {"p", num_json(t.p)},
+                          {"ci_low", num_json(t.ci_low)}, {"ci_high", num_json(t.ci_high)}};
+          }
+        }
+      }
+      groups.push_back(g);
+    }
+    if (corrected_any)
+      notices.push_back("rates of 0 or 1 were moved to 1/(2N) or 1 - 1/(2N) for d' (Macmillan & Kaplan 1985)");
+    print_notices(notices, opt->data);
+    if (opt->json) {
+      std::cout << nlohmann::json{{"task", opt->task}, {"groups", groups}, {"notices", notices}}.dump() << "\n";
+      return;
+    }
+    std::printf("%s: %zu group(s)\n", opt->task.c_str(), groups.size());
+    for (const auto& g : groups) {
+      std::printf("%s (n = %zu)\n", g["group"].get<std::string>().empty() ? "all" : g["group"].get<std::string>().c_str(),
+                  g["n"].get<std::size_t>());
+      for (const auto& [key, value] : g.items())
+        if (key != "group" && key != "n") std::printf("  %-18s %s\n", key.c_str(), value.dump().c_str());
+    }
+  });
+}
+
+void register_staircase(CLI::App& group) {
+  struct Options {
+    std::string data, level, trial;
+    std::vector<std::string> track;
+    std::size_t reversals = 6;
+    bool log_scale = false, json = false;
+  };
+  auto opt = std::make_shared<Options>();
+  CLI::App* cmd = group.add_subcommand("staircase", "Adaptive-staircase thresholds: mean of the last K reversals per track");
+  cmd->add_option("data", opt->data, "Tidy CSV, one row per trial")->required();
+  cmd->add_option("--level", opt->level, "Column of the stimulus level presented")->required();
+  cmd->add_option("--track", opt->track, "Column(s) identifying a track (e.g. participant, staircase)");
+  cmd->add_option("--trial", opt->trial, "Column ordering the trials (default: file order)");
+  cmd->add_option("--reversals", opt->reversals, "Reversals averaged (the last K)")->check(CLI::Range(1, 1000));
+  cmd->add_flag("--log", opt->log_scale, "Geometric mean (levels on a ratio scale)");
+  cmd->add_flag("--json", opt->json, "Print one JSON object");
+  cmd->callback([opt] {
+    const TidyCsv table = TidyCsv::read(opt->data);
+    const std::size_t cl = table.column(opt->level);
+    const std::size_t ct = opt->trial.empty() ? 0 : table.column(opt->trial);
+    if (table.rows() == 0) throw InputError(SourceLocation{table.file(), 0, 0}, "no data rows");
+    nlohmann::json tracks = nlohmann::json::array();
+    std::vector<std::string> notices;
+    std::vector<double> thresholds;
+    for (auto [name, rows] : group_rows(table, opt->track)) {
+      if (!opt->trial.empty()) {
+        std::vector<std::pair<double, std::size_t>> order;
+        for (std::size_t r : rows) order.push_back({table.number(r, ct), r});
+        std::stable_sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        for (std::size_t i = 0; i < rows.size(); ++i) rows[i] = order[i].second;
+      }
+      std::vector<double> levels;
+      for (std::size_t r : rows) {
+        levels.push_back(table.number(r, cl));
+        if (opt->log_scale && !(levels.back() > 0))
+          throw InputError(table.where(r, cl), "column '" + opt->level + "': --log needs levels above 0");
+      }
+      const StaircaseThreshold t = staircase_threshold(levels, opt->reversals, opt->log_scale);
+      if (t.used < opt->reversals)
+        notices.push_back("track '" + (name.empty() ? std::string("all") : name) + "' has " +
+                          std::to_string(t.reversal_levels.size()) + " reversals, fewer than " +
+                          std::to_string(opt->reversals));
+      if (t.threshold) thresholds.push_back(*t.threshold);
+      tracks.push_back({{"track", name}, {"trials", levels.size()}, {"reversal_levels", t.reversal_levels},
+                        {"used", t.used}, {"threshold", opt_json(t.threshold)}, {"sd", opt_json(t.sd)}});
+    }
+    nlohmann::json overall = nullptr;
+    if (thresholds.size() >= 2) {
+      const MushraStat s = describe("threshold", thresholds, 0.95);
+      overall = {{"n", s.n}, {"mean", s.mean}, {"sd", s.sd}, {"ci_low", opt_json(s.ci_low)}, {"ci_high", opt_json(s.ci_high)}};
+    }
+    print_notices(notices, opt->data);
+    if (opt->json) {
+      std::cout << nlohmann::json{{"reversals", opt->reversals}, {"log", opt->log_scale}, {"tracks", tracks},
+                                  {"overall", overall}, {"notices", notices}}.dump() << "\n";
+      return;
+    }
+    std::printf("%-20s %7s %10s %6s %12s\n", "Track", "trials", "reversals", "used", "threshold");
+    for (const auto& t : tracks)
+      std::printf("%-20s %7zu %10zu %6zu %12s\n", t["track"].get<std::string>().c_str(), t["trials"].get<std::size_t>(),
+                  t["reversal_levels"].size(), t["used"].get<std::size_t>(),
+                  t["threshold"].is_null() ? "NA" : fmt("%.4g", t["threshold"].get<double>()).c_str());
+    if (!overall.is_null())
+      std::printf("mean over tracks %.4g, 95%% CI [%.4g, %.4g]\n", overall["mean"].get<double>(),
+                  overall["ci_low"].get<double>(), overall["ci_high"].get<double>());
+  });
+}
+
 }  // namespace
 
 void register_stats(CLI::App& app) {
@@ -490,6 +732,8 @@ void register_stats(CLI::App& app) {
   register_ttest(*group);
   register_confusion(*group);
   register_mushra(*group);
+  register_ab(*group);
+  register_staircase(*group);
 }
 
 }  // namespace ms::cli

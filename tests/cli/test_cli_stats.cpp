@@ -234,3 +234,77 @@ TEST(CliStatsMushra, BadInput) {
   };
   for (const auto& c : cases) expect_bad(dir, c);
 }
+
+namespace {
+double golden_cell(const std::string& file, std::size_t row, const char* col) {
+  const TidyCsv g = TidyCsv::read(kData + "psychophysics/" + file);
+  return g.number(row, g.column(col));
+}
+}  // namespace
+
+TEST(CliStatsAb, ForcedChoiceDetectionAndPreference) {
+  test::TempDir dir;
+  // 2AFC: listener A 15/20 correct, listener B 20/20 (perfect: d' uses 1 - 1/(2N)).
+  std::string afc = "participant,trial,correct\n";
+  for (int i = 0; i < 20; ++i) afc += "A," + std::to_string(i) + "," + (i < 15 ? "1" : "0") + "\n";
+  for (int i = 0; i < 20; ++i) afc += "B," + std::to_string(i) + ",true\n";
+  auto r = test::run_cli("stats ab " + dir.write("afc.csv", afc) + " --task 2afc --correct correct --by participant --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["groups"].size(), 2u);
+  expect_rel(j["groups"][0]["p_above_chance"].get<double>(), golden_cell("binom_golden.csv", 1, "p"), "15/20 greater");
+  expect_rel(j["groups"][0]["dprime"].get<double>(), std::sqrt(2.0) * 0.67448975019608171, "2afc d' = sqrt2 z(.75)");
+  expect_rel(j["groups"][1]["p_above_chance"].get<double>(), golden_cell("binom_golden.csv", 4, "p"), "20/20 greater");
+  expect_rel(j["groups"][1]["dprime"].get<double>(), std::sqrt(2.0) * 1.959963984540054, "d' at 1 - 1/40");
+  EXPECT_EQ(j["notices"].size(), 1u);
+
+  // ABX: 28/40 correct is p_c = 0.7 (golden row 2 of dprime_golden.csv).
+  std::string abx = "trial,ok\n";
+  for (int i = 0; i < 40; ++i) abx += std::to_string(i) + "," + (i % 10 < 7 ? "correct" : "incorrect") + "\n";
+  r = test::run_cli("stats ab " + dir.write("abx.csv", abx) + " --task abx --correct ok --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  j = nlohmann::json::parse(r.out);
+  expect_rel(j["groups"][0]["dprime"].get<double>(), golden_cell("dprime_golden.csv", 2, "dprime_abx"), "abx d'");
+
+  // Same-different: H = 15/20, F = 4/20 (golden row 1 of same_different_golden.csv).
+  std::string sd = "pair,answer\n";
+  for (int i = 0; i < 20; ++i) sd += std::string("different,") + (i < 15 ? "different" : "same") + "\n";
+  for (int i = 0; i < 20; ++i) sd += std::string("same,") + (i < 4 ? "different" : "same") + "\n";
+  r = test::run_cli("stats ab " + dir.write("sd.csv", sd) + " --task same-different --stimulus pair --response answer --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  j = nlohmann::json::parse(r.out);
+  expect_rel(j["groups"][0]["dprime"].get<double>(), golden_cell("same_different_golden.csv", 1, "dprime"), "s-d d'");
+  expect_rel(j["groups"][0]["criterion_k"].get<double>(), golden_cell("same_different_golden.csv", 1, "k"), "s-d k");
+
+  // Preference: 7 x A, 3 x B, 2 ties -> two-sided exact p of 7/10 (golden row 0); scores vs 0.
+  const std::string pref = dir.write("pref.csv", "choice,score\nA,2\nA,1\nA,3\nB,-1\nA,2\nnone,0\nA,1\nB,-2\nA,2\nnone,0\nB,-1\nA,1\n");
+  r = test::run_cli("stats ab " + pref + " --task preference --choice choice --options A,B --score score --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["groups"][0]["ties"], 2);
+  expect_rel(j["groups"][0]["p"].get<double>(), golden_cell("binom_golden.csv", 0, "p"), "preference p");
+  expect_rel(j["groups"][0]["score"]["mean"].get<double>(), 8.0 / 12.0, "mean score");
+
+  // Bad values name the cell.
+  expect_bad(dir, {"stats ab " + dir.write("bad.csv", "correct\n1\nmaybe\n") + " --task 2afc --correct correct",
+                   "bad.csv:3:1: column 'correct': expected 1/0"});
+  expect_bad(dir, {"stats ab " + pref + " --task 2afc", "--task 2afc needs --correct COL"});
+}
+
+TEST(CliStatsStaircase, ThresholdPerTrack) {
+  test::TempDir dir;
+  // Track "p1": levels 10 8 6 7 8 7 7 5 6 (reversals 6, 8, 5), rows shuffled, ordered by --trial.
+  // Track "p2": levels 4 2 4 2 4 (reversals 2, 4, 2).
+  const std::string f = dir.write("s.csv",
+                                  "who,trial,level\np1,3,7\np1,1,8\np2,0,4\np1,0,10\np1,8,6\np1,2,6\np2,1,2\np1,4,8\n"
+                                  "p1,5,7\np2,2,4\np1,6,7\np2,3,2\np1,7,5\np2,4,4\n");
+  const auto r = test::run_cli("stats staircase " + f + " --level level --track who --trial trial --reversals 2 --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["tracks"].size(), 2u);
+  EXPECT_EQ(j["tracks"][0]["reversal_levels"], nlohmann::json({6.0, 8.0, 5.0}));
+  EXPECT_DOUBLE_EQ(j["tracks"][0]["threshold"].get<double>(), 6.5);
+  EXPECT_DOUBLE_EQ(j["tracks"][1]["threshold"].get<double>(), 3.0);
+  EXPECT_DOUBLE_EQ(j["overall"]["mean"].get<double>(), 4.75);
+  EXPECT_TRUE(j["notices"].empty());
+}
