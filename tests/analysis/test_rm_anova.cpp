@@ -28,7 +28,7 @@ void expect_rel(double actual, double expected, const std::string& what) {
 struct GoldenCase {
   std::string name;
   std::vector<std::string> within;
-  bool between;
+  std::vector<std::string> between;
 };
 
 class AfexGolden : public ::testing::TestWithParam<GoldenCase> {};
@@ -39,7 +39,7 @@ TEST_P(AfexGolden, EveryNumberMatches) {
   const TidyCsv golden = TidyCsv::read(kDir + c.name + "_golden.csv");
   std::vector<std::string> notices;
   const RmData d = rm_data_from_table(
-      data, RmColumns{"rating", "subject", c.within, c.between ? std::vector<std::string>{"group"} : std::vector<std::string>{}},
+      data, RmColumns{"rating", "subject", c.within, c.between},
       notices);
   const RmAnova a = rm_anova(d);
   ASSERT_EQ(a.effects.size(), golden.rows());
@@ -85,12 +85,13 @@ TEST_P(AfexGolden, EveryNumberMatches) {
 }
 
 INSTANTIATE_TEST_SUITE_P(RmAnova, AfexGolden,
-                         ::testing::Values(GoldenCase{"w1", {"A"}, false}, GoldenCase{"w2", {"A", "B"}, false},
-                                           GoldenCase{"w3", {"A", "B", "C"}, false},
-                                           GoldenCase{"w2b", {"A", "B"}, true},
-                                           GoldenCase{"w3b", {"A", "B", "C"}, true},
-                                           GoldenCase{"w3b_bal", {"A", "B", "C"}, true},
-                                           GoldenCase{"w2rep", {"A", "B"}, false}),
+                         ::testing::Values(GoldenCase{"w1", {"A"}, {}}, GoldenCase{"w2", {"A", "B"}, {}},
+                                           GoldenCase{"w3", {"A", "B", "C"}, {}},
+                                           GoldenCase{"w2b", {"A", "B"}, {"group"}},
+                                           GoldenCase{"w3b", {"A", "B", "C"}, {"group"}},
+                                           GoldenCase{"w3b_bal", {"A", "B", "C"}, {"group"}},
+                                           GoldenCase{"w2rep", {"A", "B"}, {}},
+                                           GoldenCase{"w2bb", {"A", "B"}, {"group", "site"}}),
                          [](const auto& info) { return info.param.name; });
 
 // Within factor order and row order do not change any effect (only names permute).

@@ -47,7 +47,8 @@ datasets <- list(
   w2b     = list(n = c(7, 6),    within = list(A = 4, B = 3)),
   w3b     = list(n = c(5, 4, 6), within = list(A = 2, B = 3, C = 3)),
   w3b_bal = list(n = c(6, 6),    within = list(A = 3, B = 2, C = 2)),
-  w2rep   = list(n = c(8),       within = list(A = 3, B = 3), reps = 3)
+  w2rep   = list(n = c(8),       within = list(A = 3, B = 3), reps = 3),
+  w2bb    = list(n = c(9, 8),    within = list(A = 3, B = 2), site = TRUE)
 )
 
 for (name in names(datasets)) {
@@ -57,6 +58,14 @@ for (name in names(datasets)) {
   within <- names(spec$within)
   between <- if (length(spec$n) > 1) "group" else NULL
   if (is.null(between)) d$group <- NULL
+  if (isTRUE(spec$site)) {
+    # A second, crossed between factor with unbalanced cells (type III sums of squares matter).
+    subjects <- sort(unique(d$subject))
+    site <- setNames(rep(c("north", "south"), length.out = length(subjects))[sample(length(subjects))], subjects)
+    d$site <- site[d$subject]
+    d$rating <- d$rating + ifelse(d$site == "north", 0.8, 0)
+    between <- c("group", "site")
+  }
   out <- d; out$rating <- g17(out$rating)
   write.csv(out, paste0(name, ".csv"), row.names = FALSE, quote = FALSE)
 
