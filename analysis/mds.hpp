@@ -8,6 +8,11 @@
 //   B_ij = -delta_ij / d_ij(X) (0 when d_ij = 0), B_ii = -sum_{j != i} B_ij; stops when sigma
 //   falls by less than `tolerance` relative, or after `max_iterations`. Several starts: the
 //   classical solution and seeded random ones; the lowest stress wins.
+// Nonmetric SMACOF (Kruskal 1964; Borg & Groenen 2005, ch. 9): each iteration replaces delta by
+//   disparities dhat, the least-squares monotone (non-decreasing in delta) regression of the current
+//   distances (pool-adjacent-violators; ties in delta kept tied: Kruskal's secondary approach),
+//   scaled so that sum dhat^2 = n(n-1)/2; then one Guttman transform with dhat. Stress-1 is
+//   sqrt(sum (d - dhat)^2 / sum d^2), as MASS::isoMDS reports it (there in percent).
 // Kruskal's stress-1 of a configuration (Kruskal 1964), with the disparities b delta at the optimal
 // ratio scale b = sum delta d / sum delta^2 (so it does not depend on the units of delta):
 //   S1 = sqrt( sum_{i<j} (d_ij - b delta_ij)^2 / sum_{i<j} d_ij^2 ).
@@ -16,6 +21,7 @@
 #include <Eigen/Dense>
 
 #include <cstdint>
+#include <vector>
 
 namespace ms {
 
@@ -41,6 +47,10 @@ struct SmacofResult {
   int best_start = 0;      // 0 = classical, 1.. = random
 };
 SmacofResult smacof(const Eigen::MatrixXd& dissimilarity, const SmacofOptions& options);
+SmacofResult smacof_nonmetric(const Eigen::MatrixXd& dissimilarity, const SmacofOptions& options);
+
+// Least-squares fit of y by a non-decreasing sequence (pool adjacent violators), unit weights.
+std::vector<double> monotone_regression(const std::vector<double>& y);
 
 // Euclidean distances between the rows of `points`.
 Eigen::MatrixXd pairwise_distances(const Eigen::MatrixXd& points);

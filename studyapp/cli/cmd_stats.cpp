@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cctype>
+#include <cstdint>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -14,6 +15,8 @@
 
 #include "analysis/binomial_test.hpp"
 #include "analysis/confusion.hpp"
+#include "analysis/dissimilarity_matrix.hpp"
+#include "analysis/mds.hpp"
 #include "analysis/mushra.hpp"
 #include "analysis/rm_anova.hpp"
 #include "analysis/rm_data.hpp"
@@ -22,6 +25,7 @@
 #include "analysis/t_test.hpp"
 #include "analysis/tidy_csv.hpp"
 #include "studyapp/cli/commands.hpp"
+#include "synthesis/atomic_file.hpp"
 #include "synthesis/input_error.hpp"
 
 namespace ms::cli {
@@ -723,6 +727,87 @@ void register_staircase(CLI::App& group) {
   });
 }
 
+void register_mds(CLI::App& group) {
+  struct Options {
+    std::string data, method = "classical", output;
+    std::vector<std::string> pairs;
+    int dims = 2, starts = 4;
+    std::uint64_t seed = 1;
+    bool json = false;
+  };
+  auto opt = std::make_shared<Options>();
+  CLI::App* cmd = group.add_subcommand("mds", "Multidimensional scaling of dissimilarities: classical, SMACOF, nonmetric");
+  cmd->add_option("data", opt->data, "Square dissimilarity matrix CSV (label column + one column per stimulus)")
+      ->required();
+  cmd->add_option("--dims", opt->dims, "Dimensions of the map")->check(CLI::Range(1, 10))->capture_default_str();
+  cmd->add_option("--method", opt->method, "classical | smacof | nonmetric")
+      ->check(CLI::IsMember({"classical", "smacof", "nonmetric"}))
+      ->capture_default_str();
+  cmd->add_option("--pairs", opt->pairs, "Read long form instead: FIRST,SECOND,VALUE columns (ratings averaged)");
+  cmd->add_option("--starts", opt->starts, "Random starts besides the classical one (smacof, nonmetric)")
+      ->check(CLI::Range(0, 1000));
+  cmd->add_option("--seed", opt->seed, "Seed of the random starts")->capture_default_str();
+  cmd->add_option("-o,--output", opt->output, "Write the configuration as CSV (label, dim1, ...)");
+  cmd->add_flag("--json", opt->json, "Print one JSON object");
+  cmd->callback([opt] {
+    const TidyCsv table = TidyCsv::read(opt->data);
+    const std::vector<std::string> pairs = split_commas(opt->pairs);
+    if (!opt->pairs.empty() && pairs.size() != 3)
+      throw InputError(SourceLocation{}, "--pairs: give three columns FIRST,SECOND,VALUE");
+    const DissimilarityMatrix d =
+        pairs.empty() ? dissimilarity_from_square(table) : dissimilarity_from_pairs(table, pairs[0], pairs[1], pairs[2]);
+    if (std::size_t(opt->dims) >= d.labels.size())
+      throw InputError(SourceLocation{}, "--dims " + std::to_string(opt->dims) + ": need fewer dimensions than the " +
+                                             std::to_string(d.labels.size()) + " stimuli");
+    std::vector<std::string> notices;
+    if (d.averaged_pairs)
+      notices.push_back(std::to_string(d.averaged_pairs) + " pairs were rated more than once; ratings averaged");
+    Eigen::MatrixXd points;
+    nlohmann::json extra;
+    if (opt->method == "classical") {
+      const ClassicalMds c = classical_mds(d.values, opt->dims);
+      points = c.points;
+      std::vector<double> eig(c.eigenvalues.data(), c.eigenvalues.data() + c.eigenvalues.size());
+      extra = {{"eigenvalues", eig}, {"stress1", stress1(d.values, points)}};
+    } else {
+      SmacofOptions o;
+      o.dims = opt->dims;
+      o.random_starts = opt->starts;
+      o.seed = opt->seed;
+      const SmacofResult r = opt->method == "smacof" ? smacof(d.values, o) : smacof_nonmetric(d.values, o);
+      points = r.points;
+      extra = {{"stress1", r.stress1}, {"raw_stress", r.raw_stress}, {"iterations", r.iterations},
+               {"best_start", r.best_start}, {"starts", opt->starts + 1}, {"seed", opt->seed}};
+    }
+    if (!opt->output.empty()) {
+      std::string csv = "label";
+      for (int k = 0; k < opt->dims; ++k) csv += ",dim" + std::to_string(k + 1);
+      csv += "\n";
+      for (std::size_t i = 0; i < d.labels.size(); ++i) {
+        csv += d.labels[i];
+        for (int k = 0; k < opt->dims; ++k) csv += "," + fmt("%.17g", points(Eigen::Index(i), k));
+        csv += "\n";
+      }
+      write_file_atomically(opt->output, csv);
+    }
+    print_notices(notices, opt->data);
+    if (opt->json) {
+      nlohmann::json j = {{"method", opt->method}, {"dims", opt->dims}, {"labels", d.labels},
+                          {"points", matrix_json(points)}, {"notices", notices}};
+      j.update(extra);
+      std::cout << j.dump() << "\n";
+      return;
+    }
+    std::printf("%s MDS of %zu stimuli in %d dimensions: stress-1 = %.4f\n", opt->method.c_str(), d.labels.size(),
+                opt->dims, extra["stress1"].get<double>());
+    for (std::size_t i = 0; i < d.labels.size(); ++i) {
+      std::printf("%-20s", d.labels[i].c_str());
+      for (int k = 0; k < opt->dims; ++k) std::printf(" %10.4f", points(Eigen::Index(i), k));
+      std::printf("\n");
+    }
+  });
+}
+
 }  // namespace
 
 void register_stats(CLI::App& app) {
@@ -734,6 +819,7 @@ void register_stats(CLI::App& app) {
   register_mushra(*group);
   register_ab(*group);
   register_staircase(*group);
+  register_mds(*group);
 }
 
 }  // namespace ms::cli

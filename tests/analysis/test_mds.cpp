@@ -96,3 +96,30 @@ TEST(Mds, LongFormAveragesPairs) {
   EXPECT_EQ(m.averaged_pairs, 1u);
   EXPECT_THROW(dissimilarity_from_pairs(TidyCsv::parse("a,b,d\nx,y,1\nx,z,2\n", "p.csv"), "a", "b", "d"), InputError);
 }
+
+TEST(Mds, MonotoneRegressionClosedForm) {
+  // 1 3 2 -> 1 2.5 2.5;  4 3 2 1 -> all 2.5.
+  EXPECT_EQ(monotone_regression({1, 3, 2}), (std::vector<double>{1, 2.5, 2.5}));
+  EXPECT_EQ(monotone_regression({4, 3, 2, 1}), (std::vector<double>{2.5, 2.5, 2.5, 2.5}));
+  EXPECT_EQ(monotone_regression({1, 2, 3}), (std::vector<double>{1, 2, 3}));
+}
+
+// Nonmetric scaling fits at least as well as metric, is invariant to monotone transforms of the
+// data, and reaches the stress MASS::isoMDS reports for the same data (its value, in percent, is
+// stored by make_golden.R).
+TEST(Mds, NonmetricAgainstIsoMds) {
+  const DissimilarityMatrix d = dissimilarity_from_square(TidyCsv::read(kDir + "dissimilarity.csv"));
+  SmacofOptions o;
+  o.random_starts = 4;
+  o.max_iterations = 5000;
+  o.tolerance = 1e-12;
+  const SmacofResult nm = smacof_nonmetric(d.values, o);
+  const SmacofResult metric = smacof(d.values, o);
+  EXPECT_LE(nm.stress1, metric.stress1);
+  const TidyCsv iso = TidyCsv::read(kDir + "isomds_golden.csv");
+  const double iso_stress1 = iso.number(0, iso.column("stress_percent")) / 100;
+  EXPECT_LE(nm.stress1, iso_stress1 * 1.05 + 1e-6) << "isoMDS " << iso_stress1;
+  // A monotone transform of the dissimilarities leaves the nonmetric solution's stress unchanged.
+  const Eigen::MatrixXd squashed = d.values.array().sqrt().matrix();
+  EXPECT_NEAR(smacof_nonmetric(squashed, o).stress1, nm.stress1, 1e-3 * nm.stress1 + 1e-6);
+}

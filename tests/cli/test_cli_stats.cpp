@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 
 #include "analysis/tidy_csv.hpp"
@@ -307,4 +308,42 @@ TEST(CliStatsStaircase, ThresholdPerTrack) {
   EXPECT_DOUBLE_EQ(j["tracks"][1]["threshold"].get<double>(), 3.0);
   EXPECT_DOUBLE_EQ(j["overall"]["mean"].get<double>(), 4.75);
   EXPECT_TRUE(j["notices"].empty());
+}
+
+TEST(CliStatsMds, ClassicalJsonEqualsCmdscaleAndWritesPoints) {
+  test::TempDir dir;
+  const auto r = test::run_cli("stats mds " + kData + "mds/dissimilarity.csv --dims 2 --method classical --json -o " +
+                               dir.file("points.csv"), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const TidyCsv golden = TidyCsv::read(kData + "mds/classical_points_golden.csv");
+  const TidyCsv written = TidyCsv::read(dir.file("points.csv"));
+  ASSERT_EQ(j["points"].size(), golden.rows());
+  ASSERT_EQ(written.rows(), golden.rows());
+  for (std::size_t k = 0; k < 2; ++k) {
+    // Column signs are arbitrary: align on the first row.
+    const double sign = (j["points"][0][k].get<double>() * golden.number(0, k + 1)) < 0 ? -1.0 : 1.0;
+    for (std::size_t i = 0; i < golden.rows(); ++i) {
+      EXPECT_NEAR(sign * j["points"][i][k].get<double>(), golden.number(i, k + 1), 1e-9);
+      EXPECT_EQ(written.number(i, k + 1), j["points"][i][k].get<double>());
+    }
+  }
+  EXPECT_EQ(j["labels"][0], golden.cell(0, 0));
+  // SMACOF lowers stress-1 below the classical solution's.
+  const auto s = nlohmann::json::parse(
+      test::run_cli("stats mds " + kData + "mds/dissimilarity.csv --method smacof --starts 2 --json", dir).out);
+  EXPECT_LT(s["stress1"].get<double>(), j["stress1"].get<double>());
+}
+
+TEST(CliStatsMds, BadInput) {
+  test::TempDir dir;
+  const std::string asym = dir.write("asym.csv", "s,a,b,c\na,0,1,2\nb,1,0,3\nc,2,4,0\n");
+  const std::string label = dir.write("label.csv", "s,a,b,c\na,0,1,2\nx,1,0,3\nc,2,3,0\n");
+  const BadCase cases[] = {
+      {"stats mds " + asym + " -o " + dir.file("never.csv"), "asym.csv:4:5: not symmetric: 4 here but 3 for (b, c)"},
+      {"stats mds " + label, "label.csv:3:1: row label 'x' differs from column 3 'b'"},
+      {"stats mds " + asym + " --pairs a,b", "--pairs: give three columns"},
+  };
+  for (const auto& c : cases) expect_bad(dir, c);
+  EXPECT_FALSE(std::filesystem::exists(dir.file("never.csv")));
 }

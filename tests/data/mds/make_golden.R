@@ -43,3 +43,7 @@ write.csv(data.frame(sound = labels, dim1 = g17(Y[, 1]), dim2 = g17(Y[, 2])), "s
 write.csv(data.frame(raw_stress = g17(s), stress1 = g17(stress1), iterations = it), "smacof_stress_golden.csv",
           row.names = FALSE, quote = FALSE)
 cat("smacof", it, "iterations, raw stress", s, "stress-1", stress1, "\n")
+
+# Kruskal's nonmetric MDS (MASS::isoMDS, from the cmdscale start); stress is in percent.
+iso <- MASS::isoMDS(D, k = 2, maxit = 1000, tol = 1e-10, trace = FALSE)
+write.csv(data.frame(stress_percent = g17(iso$stress)), "isomds_golden.csv", row.names = FALSE, quote = FALSE)
