@@ -92,7 +92,7 @@ INSTANTIATE_TEST_SUITE_P(RmAnova, AfexGolden,
                                            GoldenCase{"w3b_bal", {"A", "B", "C"}, {"group"}},
                                            GoldenCase{"w2rep", {"A", "B"}, {}},
                                            GoldenCase{"w2bb", {"A", "B"}, {"group", "site"}}),
-                         [](const auto& info) { return info.param.name; });
+                         [](const ::testing::TestParamInfo<GoldenCase>& p) { return p.param.name; });
 
 // Within factor order and row order do not change any effect (only names permute).
 TEST(RmAnova, FactorOrderIsImmaterial) {
@@ -121,7 +121,9 @@ TEST(RmAnova, FactorOrderIsImmaterial) {
     const RmEffect* o = by_name.at(canon(e.name));
     EXPECT_NEAR(e.F, o->F, 1e-9 * o->F) << e.name;
     EXPECT_NEAR(*e.eps_gg, *o->eps_gg, 1e-12) << e.name;
-    if (e.mauchly_w) EXPECT_NEAR(*e.mauchly_w, *o->mauchly_w, 1e-12) << e.name;
+    if (e.mauchly_w) {
+      EXPECT_NEAR(*e.mauchly_w, *o->mauchly_w, 1e-12) << e.name;
+    }
   }
 }
 

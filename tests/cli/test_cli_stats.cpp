@@ -132,7 +132,9 @@ TEST(CliStatsTTest, JsonEqualsRGolden) {
     const double hi = flipped ? -j["ci"][0].get<double>() : j["ci"][1].get<double>();
     expect_rel(lo, golden.number(i, golden.column("ci_low")), tag + " ci_low");
     expect_rel(hi, golden.number(i, golden.column("ci_high")), tag + " ci_high");
-    if (i == 0) EXPECT_EQ(j["notices"].size(), 1u);
+    if (i == 0) {
+      EXPECT_EQ(j["notices"].size(), 1u);
+    }
   }
 }
 
