@@ -1,0 +1,351 @@
+// modalstudy stats ... end to end: JSON equal to the R golden files, the printed table, and bad input
+// ending in one line naming file:row:column with exit code 2.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "analysis/tidy_csv.hpp"
+#include "support/test_util.hpp"
+
+using namespace ms;
+
+namespace {
+
+const std::string kData = std::string(MODALSTUDY_TEST_DATA) + "/";
+
+void expect_rel(double actual, double expected, const std::string& what) {
+  EXPECT_NEAR(actual, expected, 1e-6 * std::abs(expected) + 1e-12) << what;
+}
+
+struct BadCase {
+  std::string args, expect;
+};
+
+void expect_bad(const test::TempDir& dir, const BadCase& c) {
+  const auto r = test::run_cli(c.args, dir);
+  EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.err;
+  EXPECT_EQ(test::count_lines(r.err), 1u) << r.err;
+  EXPECT_NE(r.err.find(c.expect), std::string::npos) << "expected '" << c.expect << "' in: " << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+}
+
+}  // namespace
+
+TEST(CliStatsAnova, JsonEqualsAfexGolden) {
+  test::TempDir dir;
+  const auto r = test::run_cli("stats anova " + kData + "anova/w2b.csv --dv rating --subject subject --within A,B "
+                               "--between group --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["n_subjects"], 13);
+  EXPECT_TRUE(j["notices"].empty());
+  const TidyCsv golden = TidyCsv::read(kData + "anova/w2b_golden.csv");
+  ASSERT_EQ(j["effects"].size(), golden.rows());
+  for (std::size_t i = 0; i < golden.rows(); ++i) {
+    const auto& e = j["effects"][i];
+    EXPECT_EQ(e["effect"], golden.cell(i, 0));
+    for (const char* key : {"df1", "df2", "F", "p", "p_gg", "p_hf", "ges", "pes"})
+      expect_rel(e[key].get<double>(), golden.number(i, golden.column(key)), golden.cell(i, 0) + " " + key);
+    for (const char* key : {"eps_gg", "eps_hf", "mauchly_w", "mauchly_p"}) {
+      if (golden.cell(i, golden.column(key)) == "NA")
+        EXPECT_TRUE(e[key].is_null()) << key;
+      else
+        expect_rel(e[key].get<double>(), golden.number(i, golden.column(key)), golden.cell(i, 0) + " " + key);
+    }
+  }
+}
+
+TEST(CliStatsAnova, AveragesRepeatedObservationsWithNoticeAndPrintsTable) {
+  test::TempDir dir;
+  const auto r = test::run_cli("stats anova " + kData + "anova/w2rep.csv --dv rating --subject subject --within A --within B",
+                               dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("notice:"), std::string::npos);
+  EXPECT_NE(r.err.find("aggregating with the mean"), std::string::npos);
+  // The header of the published table and one row per effect, with the golden F printed to 4 digits.
+  EXPECT_NE(r.out.find("Effect"), std::string::npos);
+  EXPECT_NE(r.out.find("F value"), std::string::npos);
+  EXPECT_NE(r.out.find("GG eps"), std::string::npos);
+  EXPECT_NE(r.out.find("Mauchly"), std::string::npos);
+  const TidyCsv golden = TidyCsv::read(kData + "anova/w2rep_golden.csv");
+  for (std::size_t i = 0; i < golden.rows(); ++i) {
+    char f[32];
+    std::snprintf(f, sizeof f, "%.4g", golden.number(i, golden.column("F")));
+    EXPECT_NE(r.out.find(golden.cell(i, 0) + " "), std::string::npos);
+    EXPECT_NE(r.out.find(f), std::string::npos) << f << "\n" << r.out;
+  }
+}
+
+TEST(CliStatsAnova, BadInputIsOneLineWithFileRowColumn) {
+  test::TempDir dir;
+  const std::string good = "subject,A,rating\ns1,a1,1\ns1,a2,2\ns2,a1,3\ns2,a2,5\n";
+  const std::string ok = dir.write("ok.csv", good);
+  const std::string nonnum = dir.write("nonnum.csv", "subject,A,rating\ns1,a1,1\ns1,a2,x7\ns2,a1,3\ns2,a2,5\n");
+  const std::string missing_cell = dir.write("missing.csv", "subject,A,rating\ns1,a1,1\ns1,a2,2\ns2,a1,3\n");
+  const std::string single = dir.write("single.csv", "subject,A,rating\ns1,a1,1\ns1,a2,2\n");
+  const std::string ragged = dir.write("ragged.csv", "subject,A,rating\ns1,a1,1\ns1,a2\n");
+  const std::string quoted = dir.write("quoted.csv", "subject,A,rating\ns1,\"a1\",1\ns1,\"a2,\n");
+  const std::string between = dir.write("between.csv",
+                                        "subject,A,g,rating\ns1,a1,x,1\ns1,a2,y,2\ns2,a1,x,3\ns2,a2,x,5\n");
+  const std::string a = " --dv rating --subject subject --within A";
+  const BadCase cases[] = {
+      {"stats anova " + ok + " --dv score --subject subject --within A", "ok.csv:1:1: missing column 'score'"},
+      {"stats anova " + ok + " --dv rating --subject subject --within B", "ok.csv:1:1: missing column 'B'"},
+      {"stats anova " + nonnum + a, "nonnum.csv:3:7: column 'rating': expected a number, got 'x7'"},
+      {"stats anova " + missing_cell + a, "missing.csv:4:1: subject 's2' has no observation for A=a2"},
+      {"stats anova " + single + a, "single.csv:2:1: only one subject"},
+      {"stats anova " + ragged + a, "ragged.csv:3:1: expected 3 cells"},
+      {"stats anova " + quoted + a, "quoted.csv:3:4: unterminated quoted field"},
+      {"stats anova " + between + a + " --between g", "between.csv:3:7: between factor 'g' changes within subject 's1'"},
+      {"stats anova " + dir.file("nope.csv") + a, "nope.csv: no such file"},
+      {"stats ttest " + ok + " --dv rating --group A --paired", "--paired needs --subject"},
+      {"stats ttest " + missing_cell + " --dv rating --group A --paired --subject subject",
+       "missing.csv:4:1: subject 's2' has no observation for A=a2"},
+  };
+  for (const auto& c : cases) expect_bad(dir, c);
+}
+
+TEST(CliStatsTTest, JsonEqualsRGolden) {
+  test::TempDir dir;
+  const TidyCsv golden = TidyCsv::read(kData + "anova/ttest_golden.csv");
+  const std::string args[] = {
+      "stats ttest " + kData + "anova/ttest_paired.csv --dv rating --group condition --paired --subject subject --json",
+      "stats ttest " + kData + "anova/ttest_independent.csv --dv rating --group group --json",
+      "stats ttest " + kData + "anova/ttest_independent.csv --dv rating --group group --student --json"};
+  for (std::size_t i = 0; i < 3; ++i) {
+    const auto r = test::run_cli(args[i], dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    auto j = nlohmann::json::parse(r.out);
+    // The CLI orders levels by first appearance; the golden difference is before - after and
+    // recorded - synthesised, so flip the sign when the file lists the other level first.
+    const bool flipped = j["levels"][0] == "after" || j["levels"][0] == "synthesised";
+    const double s = flipped ? -1.0 : 1.0;
+    const std::string tag = golden.cell(i, 0);
+    expect_rel(s * j["t"].get<double>(), golden.number(i, golden.column("t")), tag + " t");
+    expect_rel(j["df"].get<double>(), golden.number(i, golden.column("df")), tag + " df");
+    expect_rel(j["p"].get<double>(), golden.number(i, golden.column("p")), tag + " p");
+    const double lo = flipped ? -j["ci"][1].get<double>() : j["ci"][0].get<double>();
+    const double hi = flipped ? -j["ci"][0].get<double>() : j["ci"][1].get<double>();
+    expect_rel(lo, golden.number(i, golden.column("ci_low")), tag + " ci_low");
+    expect_rel(hi, golden.number(i, golden.column("ci_high")), tag + " ci_high");
+    if (i == 0) {
+      EXPECT_EQ(j["notices"].size(), 1u);
+    }
+  }
+}
+
+TEST(CliStatsConfusion, CompareJsonEqualsSklearnGolden) {
+  test::TempDir dir;
+  std::ifstream in(kData + "confusion/golden.json");
+  const auto g = nlohmann::json::parse(in);
+  const std::string d = kData + "confusion/";
+  const auto r = test::run_cli("stats confusion " + d + "responses_recorded.csv --truth material --response answer "
+                               "--labels wood,plastic,metal,porcelain,glass --compare " + d +
+                               "responses_synthesised.csv --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["labels"], g["labels"]);
+  EXPECT_EQ(j["counts"], g["recorded"]["counts"]);
+  EXPECT_EQ(j["compare"]["counts"], g["synthesised"]["counts"]);
+  for (const char* key : {"accuracy", "kappa", "chi2"}) {
+    expect_rel(j[key].get<double>(), g["recorded"][key].get<double>(), key);
+    expect_rel(j["compare"][key].get<double>(), g["synthesised"][key].get<double>(), key);
+  }
+  EXPECT_EQ(j["chi2_df"], g["recorded"]["chi2_df"]);
+  for (std::size_t i = 0; i < 5; ++i)
+    for (std::size_t k = 0; k < 5; ++k)
+      expect_rel(j["row_percent"][i][k].get<double>(), g["recorded"]["row_percent"][i][k].get<double>(), "pct");
+  expect_rel(j["frobenius"].get<double>(), g["recorded_vs_synthesised"]["frobenius"].get<double>(), "frobenius");
+  for (std::size_t i = 0; i < 5; ++i) {
+    expect_rel(j["recall_diff"][i]["ci_low"].get<double>(),
+               g["recorded_vs_synthesised"]["recall_diff_ci"][i][0].get<double>(), "ci_low");
+    expect_rel(j["recall_diff"][i]["ci_high"].get<double>(),
+               g["recorded_vs_synthesised"]["recall_diff_ci"][i][1].get<double>(), "ci_high");
+  }
+}
+
+TEST(CliStatsConfusion, DefaultLabelsAreSortedAndTablePrints) {
+  test::TempDir dir;
+  const auto r = test::run_cli("stats confusion " + kData + "confusion/responses_recorded.csv --truth material "
+                               "--response answer", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("Cohen's kappa"), std::string::npos);
+  // Sorted labels: glass first; the glass row of the golden counts is its last row.
+  const auto j = nlohmann::json::parse(
+      test::run_cli("stats confusion " + kData + "confusion/responses_recorded.csv --truth material --response answer --json",
+                    dir).out);
+  EXPECT_EQ(j["labels"][0], "glass");
+  EXPECT_EQ(j["labels"][4], "wood");
+  std::ifstream in(kData + "confusion/golden.json");
+  const auto g = nlohmann::json::parse(in);
+  EXPECT_EQ(j["counts"][0][0], g["recorded"]["counts"][4][4]);  // glass -> glass
+}
+
+TEST(CliStatsConfusion, BadInput) {
+  test::TempDir dir;
+  const std::string f = dir.write("r.csv", "listener,material,answer\nL1,wood,wood\nL1,metal,gold\n");
+  const BadCase cases[] = {
+      {"stats confusion " + f + " --truth material --response reply", "r.csv:1:1: missing column 'reply'"},
+      {"stats confusion " + f + " --truth material --response answer --labels wood,metal",
+       "r.csv:3:10: column 'answer': label 'gold' is not in --labels"},
+      {"stats confusion " + f + " --truth material --response answer --compare " + dir.file("none.csv"),
+       "none.csv: no such file"},
+  };
+  for (const auto& c : cases) expect_bad(dir, c);
+}
+
+TEST(CliStatsMushra, JsonEqualsRGolden) {
+  test::TempDir dir;
+  const auto r = test::run_cli("stats mushra " + kData + "mushra/results.csv --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["n_assessors"], 12);
+  EXPECT_EQ(j["n_included"], 11);
+  EXPECT_EQ(j["anchors"].size(), 2u);  // anchor35, anchor70 found by name
+  for (const auto& a : j["assessors"]) {
+    EXPECT_EQ(a["excluded"].get<bool>(), a["subject"] == "P03") << a;
+    EXPECT_EQ(a["anchor_fails"].get<bool>(), a["subject"] == "P09") << a;
+  }
+  const TidyCsv golden = TidyCsv::read(kData + "mushra/summary_golden.csv");
+  for (std::size_t i = 0; i < 6; ++i) {  // the ALL rows
+    const auto& c = *std::find_if(j["conditions"].begin(), j["conditions"].end(),
+                                  [&](const auto& x) { return x["condition"] == golden.cell(i, 1); });
+    for (const char* key : {"mean", "sd", "ci_low", "ci_high"})
+      expect_rel(c[key].get<double>(), golden.number(i, golden.column(key)), golden.cell(i, 1) + " " + key);
+  }
+  EXPECT_EQ(j["items"].size(), 8u);
+  EXPECT_EQ(j["notices"].size(), 1u);
+  // --screen-anchors also drops the assessor who rated the mid anchor above 90.
+  const auto s = nlohmann::json::parse(
+      test::run_cli("stats mushra " + kData + "mushra/results.csv --anchor anchor70 --screen-anchors --json", dir).out);
+  EXPECT_EQ(s["n_included"], 10);
+}
+
+TEST(CliStatsMushra, BadInput) {
+  test::TempDir dir;
+  const std::string f = dir.write("m.csv", "participant,trial,condition,rating\nP1,t1,reference,100\nP1,t1,codec,101\n");
+  const std::string g = dir.write("n.csv", "participant,trial,condition,rating\nP1,t1,ref,100\nP1,t1,codec,50\n");
+  const BadCase cases[] = {
+      {"stats mushra " + f, "m.csv:3:13: column 'rating': rating 101 outside the MUSHRA scale 0-100"},
+      {"stats mushra " + g, "n.csv:1:1: no condition named 'reference'"},
+      {"stats mushra " + g + " --reference ref --anchor lp", "--anchor: no condition named 'lp'"},
+      {"stats mushra " + f + " --rating score", "m.csv:1:1: missing column 'score'"},
+  };
+  for (const auto& c : cases) expect_bad(dir, c);
+}
+
+namespace {
+double golden_cell(const std::string& file, std::size_t row, const char* col) {
+  const TidyCsv g = TidyCsv::read(kData + "psychophysics/" + file);
+  return g.number(row, g.column(col));
+}
+}  // namespace
+
+TEST(CliStatsAb, ForcedChoiceDetectionAndPreference) {
+  test::TempDir dir;
+  // 2AFC: listener A 15/20 correct, listener B 20/20 (perfect: d' uses 1 - 1/(2N)).
+  std::string afc = "participant,trial,correct\n";
+  for (int i = 0; i < 20; ++i) afc += "A," + std::to_string(i) + "," + (i < 15 ? "1" : "0") + "\n";
+  for (int i = 0; i < 20; ++i) afc += "B," + std::to_string(i) + ",true\n";
+  auto r = test::run_cli("stats ab " + dir.write("afc.csv", afc) + " --task 2afc --correct correct --by participant --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["groups"].size(), 2u);
+  expect_rel(j["groups"][0]["p_above_chance"].get<double>(), golden_cell("binom_golden.csv", 1, "p"), "15/20 greater");
+  expect_rel(j["groups"][0]["dprime"].get<double>(), std::sqrt(2.0) * 0.67448975019608171, "2afc d' = sqrt2 z(.75)");
+  expect_rel(j["groups"][1]["p_above_chance"].get<double>(), golden_cell("binom_golden.csv", 4, "p"), "20/20 greater");
+  expect_rel(j["groups"][1]["dprime"].get<double>(), std::sqrt(2.0) * 1.959963984540054, "d' at 1 - 1/40");
+  EXPECT_EQ(j["notices"].size(), 1u);
+
+  // ABX: 28/40 correct is p_c = 0.7 (golden row 2 of dprime_golden.csv).
+  std::string abx = "trial,ok\n";
+  for (int i = 0; i < 40; ++i) abx += std::to_string(i) + "," + (i % 10 < 7 ? "correct" : "incorrect") + "\n";
+  r = test::run_cli("stats ab " + dir.write("abx.csv", abx) + " --task abx --correct ok --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  j = nlohmann::json::parse(r.out);
+  expect_rel(j["groups"][0]["dprime"].get<double>(), golden_cell("dprime_golden.csv", 2, "dprime_abx"), "abx d'");
+
+  // Same-different: H = 15/20, F = 4/20 (golden row 1 of same_different_golden.csv).
+  std::string sd = "pair,answer\n";
+  for (int i = 0; i < 20; ++i) sd += std::string("different,") + (i < 15 ? "different" : "same") + "\n";
+  for (int i = 0; i < 20; ++i) sd += std::string("same,") + (i < 4 ? "different" : "same") + "\n";
+  r = test::run_cli("stats ab " + dir.write("sd.csv", sd) + " --task same-different --stimulus pair --response answer --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  j = nlohmann::json::parse(r.out);
+  expect_rel(j["groups"][0]["dprime"].get<double>(), golden_cell("same_different_golden.csv", 1, "dprime"), "s-d d'");
+  expect_rel(j["groups"][0]["criterion_k"].get<double>(), golden_cell("same_different_golden.csv", 1, "k"), "s-d k");
+
+  // Preference: 7 x A, 3 x B, 2 ties -> two-sided exact p of 7/10 (golden row 0); scores vs 0.
+  const std::string pref = dir.write("pref.csv", "choice,score\nA,2\nA,1\nA,3\nB,-1\nA,2\nnone,0\nA,1\nB,-2\nA,2\nnone,0\nB,-1\nA,1\n");
+  r = test::run_cli("stats ab " + pref + " --task preference --choice choice --options A,B --score score --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["groups"][0]["ties"], 2);
+  expect_rel(j["groups"][0]["p"].get<double>(), golden_cell("binom_golden.csv", 0, "p"), "preference p");
+  expect_rel(j["groups"][0]["score"]["mean"].get<double>(), 8.0 / 12.0, "mean score");
+
+  // Bad values name the cell.
+  expect_bad(dir, {"stats ab " + dir.write("bad.csv", "correct\n1\nmaybe\n") + " --task 2afc --correct correct",
+                   "bad.csv:3:1: column 'correct': expected 1/0"});
+  expect_bad(dir, {"stats ab " + pref + " --task 2afc", "--task 2afc needs --correct COL"});
+}
+
+TEST(CliStatsStaircase, ThresholdPerTrack) {
+  test::TempDir dir;
+  // Track "p1": levels 10 8 6 7 8 7 7 5 6 (reversals 6, 8, 5), rows shuffled, ordered by --trial.
+  // Track "p2": levels 4 2 4 2 4 (reversals 2, 4, 2).
+  const std::string f = dir.write("s.csv",
+                                  "who,trial,level\np1,3,7\np1,1,8\np2,0,4\np1,0,10\np1,8,6\np1,2,6\np2,1,2\np1,4,8\n"
+                                  "p1,5,7\np2,2,4\np1,6,7\np2,3,2\np1,7,5\np2,4,4\n");
+  const auto r = test::run_cli("stats staircase " + f + " --level level --track who --trial trial --reversals 2 --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["tracks"].size(), 2u);
+  EXPECT_EQ(j["tracks"][0]["reversal_levels"], nlohmann::json({6.0, 8.0, 5.0}));
+  EXPECT_DOUBLE_EQ(j["tracks"][0]["threshold"].get<double>(), 6.5);
+  EXPECT_DOUBLE_EQ(j["tracks"][1]["threshold"].get<double>(), 3.0);
+  EXPECT_DOUBLE_EQ(j["overall"]["mean"].get<double>(), 4.75);
+  EXPECT_TRUE(j["notices"].empty());
+}
+
+TEST(CliStatsMds, ClassicalJsonEqualsCmdscaleAndWritesPoints) {
+  test::TempDir dir;
+  const auto r = test::run_cli("stats mds " + kData + "mds/dissimilarity.csv --dims 2 --method classical --json -o " +
+                               dir.file("points.csv"), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const TidyCsv golden = TidyCsv::read(kData + "mds/classical_points_golden.csv");
+  const TidyCsv written = TidyCsv::read(dir.file("points.csv"));
+  ASSERT_EQ(j["points"].size(), golden.rows());
+  ASSERT_EQ(written.rows(), golden.rows());
+  for (std::size_t k = 0; k < 2; ++k) {
+    // Column signs are arbitrary: align on the first row.
+    const double sign = (j["points"][0][k].get<double>() * golden.number(0, k + 1)) < 0 ? -1.0 : 1.0;
+    for (std::size_t i = 0; i < golden.rows(); ++i) {
+      EXPECT_NEAR(sign * j["points"][i][k].get<double>(), golden.number(i, k + 1), 1e-9);
+      EXPECT_EQ(written.number(i, k + 1), j["points"][i][k].get<double>());
+    }
+  }
+  EXPECT_EQ(j["labels"][0], golden.cell(0, 0));
+  // SMACOF lowers stress-1 below the classical solution's.
+  const auto s = nlohmann::json::parse(
+      test::run_cli("stats mds " + kData + "mds/dissimilarity.csv --method smacof --starts 2 --json", dir).out);
+  EXPECT_LT(s["stress1"].get<double>(), j["stress1"].get<double>());
+}
+
+TEST(CliStatsMds, BadInput) {
+  test::TempDir dir;
+  const std::string asym = dir.write("asym.csv", "s,a,b,c\na,0,1,2\nb,1,0,3\nc,2,4,0\n");
+  const std::string label = dir.write("label.csv", "s,a,b,c\na,0,1,2\nx,1,0,3\nc,2,3,0\n");
+  const BadCase cases[] = {
+      {"stats mds " + asym + " -o " + dir.file("never.csv"), "asym.csv:4:5: not symmetric: 4 here but 3 for (b, c)"},
+      {"stats mds " + label, "label.csv:3:1: row label 'x' differs from column 3 'b'"},
+      {"stats mds " + asym + " --pairs a,b", "--pairs: give three columns"},
+  };
+  for (const auto& c : cases) expect_bad(dir, c);
+  EXPECT_FALSE(std::filesystem::exists(dir.file("never.csv")));
+}
