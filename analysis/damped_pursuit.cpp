@@ -51,7 +51,8 @@ std::size_t damped_pursuit(const std::vector<double>& x, double fs, std::vector<
   std::vector<double> r = subtract_components(x, comps, x.size());
   RefineOptions ro;
   ro.max_iterations = o.refine_iterations;
-  std::vector<double> zeros(x.size(), 0.0);
+  std::vector<double> zeros;
+  zeros.reserve(x.size());
   std::size_t added = 0;
   for (int atom = 0; atom < o.max_atoms; ++atom) {
     double best_gain = 0.0;
@@ -82,8 +83,7 @@ std::size_t damped_pursuit(const std::vector<double>& x, double fs, std::vector<
       if (near) slowest = std::min(slowest, -c.s.real());
     }
     const std::size_t span = std::clamp(std::size_t(12.0 / slowest), window, x.size());
-    std::fill(zeros.begin(), zeros.begin() + std::ptrdiff_t(span), 0.0);
-    zeros.resize(span);
+    zeros.assign(span, 0.0);  // within the capacity reserved above: no reallocation
     const std::vector<double> minus =
         subtract_components(zeros, std::vector<DampedComponent>(local.begin() + 1, local.end()), span);
     std::vector<double> target(r.begin(), r.begin() + std::ptrdiff_t(span));

@@ -2,7 +2,8 @@
 //
 // Method (chosen over Ren et al.'s spectrogram peak fitting because it resolves modes closer than a
 // spectrogram bin and meets the 0.05 % / 3 % accuracy goals): high-resolution sub-band ESPRIT.
-//  1. noise sigma from the median periodogram of the last quarter (noise_floor.hpp);
+//  1. noise sigma from the median periodogram of the last quarter, plus per-band levels where the
+//     noise is coloured (noise_floor.hpp);
 //  2. onset from the energy rise (onset.hpp); the onset is the time origin of every amplitude;
 //  3. one FFT of the decaying part, split into bands (subband.hpp): narrow bands (fine resolution,
 //     whole duration) for slowly decaying modes and wide bands over the first tens of milliseconds

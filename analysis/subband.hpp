@@ -3,6 +3,7 @@
 // the analytic band signal decimated to just above the mask's width. A mode inside the band stays an
 // exact damped exponential once the (short, zero-phase) mask kernel has passed the onset.
 #pragma once
+#include <algorithm>
 #include <complex>
 #include <cstddef>
 #include <map>
