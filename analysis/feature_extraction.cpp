@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "analysis/damped_fit.hpp"
+#include "analysis/damped_pursuit.hpp"
 #include "analysis/esprit.hpp"
 #include "analysis/noise_floor.hpp"
 #include "analysis/onset.hpp"
@@ -48,7 +49,8 @@ std::vector<Band> wide_layout(double top_hz, double width_hz) {
 
 // ESPRIT on every band with energy above the noise; poles whose frequency lies in the band's core.
 void scan_bands(SubbandSplitter& split, const std::vector<Band>& bands, double fs, double max_s,
-                double min_freq_hz, double hum_decay_per_s, std::vector<DampedComponent>& found) {
+                double min_freq_hz, double hum_decay_per_s, double threshold_factor,
+                std::vector<DampedComponent>& found) {
   for (const Band& b : bands) {
     // A band whose loudest bin is within ~13 dB of the noise has nothing ESPRIT could find there.
     if (split.peak_to_noise(b.lo_hz, b.hi_hz) < 20.0) continue;
@@ -69,6 +71,7 @@ void scan_bands(SubbandSplitter& split, const std::vector<Band>& bands, double f
     const std::size_t length = end - sig.settle;
     EspritOptions eo;
     eo.window = std::clamp<std::size_t>(length / 3, 8, 64);
+    eo.threshold_factor = threshold_factor;
     eo.max_order = eo.window - 4;
     eo.noise_power = sig.noise_power;
     const auto poles = esprit(sig.samples.data() + sig.settle, length, eo);
@@ -89,6 +92,26 @@ double component_energy(const DampedComponent& c, std::size_t frames) {
   const cd t_abs = weighted_geometric_sum(0, cd(2.0 * c.s.real(), 0.0), frames);
   const cd t_osc = weighted_geometric_sum(0, 2.0 * c.s, frames);
   return 0.5 * (std::norm(c.b) * t_abs.real() + (c.b * c.b * t_osc).real());
+}
+
+// Pairs of components, one of them fast, that largely cancel each other (their sum carries under a
+// quarter of their energies) are an ill-posed fit of crowded heavily damped modes, not two modes:
+// both go, and the pursuit rebuilds that region from the residual.
+void drop_cancelling(std::vector<DampedComponent>& c, std::size_t frames, double min_decay) {
+  const std::size_t K = c.size();
+  std::vector<double> e(K);
+  for (std::size_t k = 0; k < K; ++k) e[k] = component_energy(c[k], frames);
+  std::vector<bool> bad(K, false);
+  for (std::size_t j = 0; j < K; ++j)
+    for (std::size_t k = j + 1; k < K; ++k) {
+      if (-c[j].s.real() < min_decay && -c[k].s.real() < min_decay) continue;
+      const cd tp = weighted_geometric_sum(0, c[j].s + c[k].s, frames);
+      const cd tm = weighted_geometric_sum(0, c[j].s + std::conj(c[k].s), frames);
+      const double cross = 0.5 * (c[j].b * c[k].b * tp + c[j].b * std::conj(c[k].b) * tm).real();
+      if (e[j] + e[k] + 2.0 * cross < 0.25 * (e[j] + e[k])) bad[j] = bad[k] = true;
+    }
+  std::size_t k = 0;
+  std::erase_if(c, [&](const DampedComponent&) { return bad[k++]; });
 }
 
 // Poles closer than the estimation noise describe one mode: keep the stronger.
@@ -161,8 +184,11 @@ ExtractedFeatures extract_features(const std::vector<float>& samples, double fs,
   // Narrow bands over the whole duration (slow and moderately damped modes), then wide bands over
   // the early part (fast modes the narrow masks' kernels hide), each on what is still unexplained.
   const double noise_energy = sigma * sigma;
+  // Coloured noise: per-band levels from the recording's tail (noise_floor.hpp).
+  const NoiseProfile noise = estimate_noise_profile(x, fs, sigma);
   auto audible = [&](const DampedComponent& c) {
-    return 10.0 * std::log10(component_energy(c, frames) / noise_energy) >= options.min_snr_db;
+    const double var = std::max(noise_energy, noise.variance_at(c.s.imag() * fs / kTwoPi));
+    return 10.0 * std::log10(component_energy(c, frames) / var) >= options.min_snr_db;
   };
   // Candidates under the noise go at once; at most kMaxCandidates (strongest) survive a scan, which
   // bounds the joint fit on pathological input (e.g. dense stationary tones).
@@ -179,9 +205,9 @@ ExtractedFeatures extract_features(const std::vector<float>& samples, double fs,
   auto scan = [&](const std::vector<double>& signal, std::vector<DampedComponent>& found) {
     const std::size_t before = found.size();
     {
-      SubbandSplitter split(signal, fs, sigma);
+      SubbandSplitter split(signal, fs, sigma, &noise);
       scan_bands(split, narrow_layout(top_hz, options.narrow_band_hz), fs, options.max_duration_s,
-                 options.min_freq_hz, options.hum_decay_per_s, found);
+                 options.min_freq_hz, options.hum_decay_per_s, 4.0, found);
     }
     std::vector<DampedComponent> with_slow(found.begin() + std::ptrdiff_t(before), found.end());
     fit_amplitudes(signal, with_slow);
@@ -190,9 +216,9 @@ ExtractedFeatures extract_features(const std::vector<float>& samples, double fs,
     found.insert(found.end(), with_slow.begin(), with_slow.end());
     const std::vector<double> rest = subtract_components(signal, with_slow, early);
     std::vector<DampedComponent> fast;
-    SubbandSplitter split(rest, fs, sigma);
+    SubbandSplitter split(rest, fs, sigma, &noise);
     scan_bands(split, wide_layout(top_hz, options.wide_band_hz), fs, options.wide_window_s,
-               options.min_freq_hz, options.hum_decay_per_s, fast);
+               options.min_freq_hz, options.hum_decay_per_s, options.fast_threshold_factor, fast);
     std::erase_if(fast, [&](const DampedComponent& c) { return -c.s.real() * fs < options.fast_decay_per_s; });
     fit_amplitudes(rest, fast);
     keep_audible(fast);
@@ -201,16 +227,17 @@ ExtractedFeatures extract_features(const std::vector<float>& samples, double fs,
   std::vector<DampedComponent> comps;
   scan(s, comps);
   refine_poles(s, comps, ro);
-  // Greedy removal (Ren et al.): look again at the residual of the joint fit.
-  {
-    std::vector<DampedComponent> more;
-    scan(subtract_components(s, comps, frames), more);
-    if (!more.empty()) {
-      comps.insert(comps.end(), more.begin(), more.end());
-      refine_poles(s, comps, ro);
-    }
-  }
   merge_duplicates(comps, fs);
+  drop_cancelling(comps, frames, options.fast_decay_per_s / fs);
+  // Greedy pursuit on the residual of the joint fit (replaces a second sub-band scan: it finds the
+  // crowded, heavily damped modes the bands miss, at a fraction of the cost).
+  PursuitOptions po;
+  po.min_freq_hz = options.min_freq_hz;
+  po.max_freq_hz = top_hz;
+  po.noise_variance = noise_energy;
+  po.noise = &noise;
+  po.max_atoms = options.pursuit_atoms;
+  damped_pursuit(s, fs, comps, po);
   for (int pass = 0; pass < 2; ++pass) {
     std::erase_if(comps, [&](const DampedComponent& c) {
       const double d = -c.s.real() * fs, f = c.s.imag() * fs / kTwoPi;

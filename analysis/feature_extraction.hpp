@@ -2,15 +2,19 @@
 //
 // Method (chosen over Ren et al.'s spectrogram peak fitting because it resolves modes closer than a
 // spectrogram bin and meets the 0.05 % / 3 % accuracy goals): high-resolution sub-band ESPRIT.
-//  1. noise sigma from the median periodogram of the last quarter (noise_floor.hpp);
+//  1. noise sigma from the median periodogram of the last quarter, plus per-band levels where the
+//     noise is coloured (noise_floor.hpp);
 //  2. onset from the energy rise (onset.hpp); the onset is the time origin of every amplitude;
 //  3. one FFT of the decaying part, split into bands (subband.hpp): narrow bands (fine resolution,
 //     whole duration) for slowly decaying modes and wide bands over the first tens of milliseconds
 //     for fast ones (the narrow bands' mask kernels would swallow them); ESPRIT per band with the
 //     model order from the eigenvalues against the known band noise (esprit.hpp);
 //  4. all candidates refined jointly on the full-band signal by variable-projection Levenberg-Marquardt
-//     with closed-form Gram matrices (damped_fit.hpp), which also fixes the amplitudes;
-//  5. Sterling et al.'s clean-up: drop stationary hum (decay below hum_decay_per_s) and modes whose
+//     with closed-form Gram matrices (damped_fit.hpp), which also fixes the amplitudes; pairs that
+//     cancel each other (an ill-posed fit of crowded fast modes) are dropped;
+//  5. greedy damped-sinusoid pursuit on the residual (damped_pursuit.hpp): the best-matching atom is
+//     added and refit with its spectral neighbours, until nothing stands out of the noise;
+//  6. Sterling et al.'s clean-up: drop stationary hum (decay below hum_decay_per_s) and modes whose
 //     energy does not stand min_snr_db above the noise; refit the survivors.
 #pragma once
 #include <cstddef>
@@ -31,6 +35,10 @@ struct ExtractOptions {
   double wide_band_hz = 2000.0;  // core width of the wide bands
   double wide_window_s = 0.08;   // data used by the wide bands (fast modes)
   double fast_decay_per_s = 60.0;  // wide-band candidates at least this fast are kept
+  // Wide bands see few samples per fast mode: a lower eigenvalue threshold (x noise edge) keeps the
+  // weaker fast poles as candidates; the audibility check and the joint fit sort them out.
+  double fast_threshold_factor = 2.0;
+  int pursuit_atoms = 16;          // at most this many modes added by the residual pursuit
   int refine_iterations = 6;
 };
 

@@ -38,6 +38,51 @@ double estimate_noise_sigma(const std::vector<double>& x) {
   return std::sqrt(*mid / (std::numbers::ln2 * window_energy));
 }
 
+NoiseProfile estimate_noise_profile(const std::vector<double>& x, double fs, double white_sigma) {
+  NoiseProfile p;
+  p.white_variance = white_sigma * white_sigma;
+  const std::size_t n = std::max<std::size_t>(std::min<std::size_t>(x.size(), 64), x.size() / 4);
+  if (n < 16) return p;
+  const std::size_t size = nice_fft_size(n), start = x.size() - n;
+  double* in = fftw_alloc_real(size);
+  fftw_complex* out = fftw_alloc_complex(size / 2 + 1);
+  fftw_plan plan = fftw_plan_dft_r2c_1d(int(size), in, out, FFTW_ESTIMATE);
+  std::fill(in, in + size, 0.0);
+  double window_energy = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double w = 0.5 - 0.5 * std::cos(2.0 * std::numbers::pi * (double(i) + 0.5) / double(n));
+    in[i] = w * x[start + i];
+    window_energy += w * w;
+  }
+  fftw_execute(plan);
+  const double bin_hz = fs / double(size);
+  std::vector<double> power;
+  for (std::size_t k = 1; k < size / 2;) {
+    const double lo = double(k) * bin_hz, hi = std::max(lo + 64.0, lo * std::cbrt(2.0));
+    power.clear();
+    for (; k < size / 2 && double(k) * bin_hz < hi; ++k) power.push_back(out[k][0] * out[k][0] + out[k][1] * out[k][1]);
+    auto mid = power.begin() + std::ptrdiff_t(power.size() / 2);
+    std::nth_element(power.begin(), mid, power.end());
+    const double v = *mid / (std::numbers::ln2 * window_energy);
+    p.upper_hz.push_back(double(k) * bin_hz);
+    p.variance.push_back(v > 4.0 * p.white_variance ? v : p.white_variance);
+  }
+  fftw_destroy_plan(plan);
+  fftw_free(out);
+  fftw_free(in);
+  return p;
+}
+
+double NoiseProfile::variance_at(double freq_hz) const { return max_variance(freq_hz, freq_hz); }
+
+double NoiseProfile::max_variance(double lo_hz, double hi_hz) const {
+  double v = white_variance;
+  double lower = 0.0;
+  for (std::size_t b = 0; b < upper_hz.size(); lower = upper_hz[b], ++b)
+    if (upper_hz[b] >= lo_hz && lower <= hi_hz) v = std::max(v, variance[b]);
+  return v;
+}
+
 double noise_floor_db(double sigma) { return sigma > 0.0 ? 20.0 * std::log10(sigma) : -400.0; }
 
 }  // namespace ms

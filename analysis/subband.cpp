@@ -33,8 +33,8 @@ struct SubbandSplitter::Plan {
 };
 
 SubbandSplitter::SubbandSplitter(const std::vector<double>& x, double sample_rate_hz,
-                                 double noise_sigma)
-    : frames_(x.size()), fs_(sample_rate_hz), sigma_(noise_sigma) {
+                                 double noise_sigma, const NoiseProfile* noise)
+    : frames_(x.size()), fs_(sample_rate_hz), sigma_(noise_sigma), noise_(noise) {
   // Zero padding of 1/4 keeps the circular wrap of the mask kernels away from the data.
   fft_size_ = nice_fft_size(frames_ + frames_ / 4 + 64);
   bin_hz_ = fs_ / double(fft_size_);
@@ -64,7 +64,7 @@ double SubbandSplitter::peak_to_noise(double lo_hz, double hi_hz) const {
   const auto hi = std::min(spectrum_.size() - 1, std::size_t(std::max(0.0, std::ceil(hi_hz / bin_hz_))));
   double peak = 0.0;
   for (std::size_t k = lo; k <= hi; ++k) peak = std::max(peak, std::norm(spectrum_[k]));
-  const double noise = double(frames_) * sigma_ * sigma_;
+  const double noise = double(frames_) * variance(lo_hz, hi_hz);
   return noise > 0.0 ? peak / noise : (peak > 0.0 ? 1e300 : 0.0);
 }
 
@@ -105,8 +105,9 @@ BandSignal SubbandSplitter::band(double center_hz, double core_hz, double skirt_
   out.samples.resize(usable);
   for (std::size_t j = 0; j < usable; ++j) out.samples[j] = {scale * p.buffer[j][0], scale * p.buffer[j][1]};
   // White noise: E|S_k|^2 = frames sigma^2; per decimated sample at a flat mask of M bins.
-  out.noise_power = scale * scale * double(frames_) * sigma_ * sigma_ * double(M) * mask_energy;
-  out.noise_variance = scale * scale * double(frames_) * sigma_ * sigma_ * mask_sum;
+  const double var = variance(center_hz - reach, center_hz + reach);
+  out.noise_power = scale * scale * double(frames_) * var * double(M) * mask_energy;
+  out.noise_variance = scale * scale * double(frames_) * var * mask_sum;
   // The skirt's kernel has decayed to well under 1e-3 after ~1.5 / skirt_hz.
   out.settle = std::size_t(std::ceil(1.5 / skirt_hz * out.rate_hz));
   return out;

@@ -3,11 +3,14 @@
 // the analytic band signal decimated to just above the mask's width. A mode inside the band stays an
 // exact damped exponential once the (short, zero-phase) mask kernel has passed the onset.
 #pragma once
+#include <algorithm>
 #include <complex>
 #include <cstddef>
 #include <map>
 #include <memory>
 #include <vector>
+
+#include "analysis/noise_floor.hpp"
 
 namespace ms {
 
@@ -23,7 +26,9 @@ struct BandSignal {
 class SubbandSplitter {
  public:
   // x: the real signal (its first sample is the time origin), sigma: white-noise std of x.
-  SubbandSplitter(const std::vector<double>& x, double sample_rate_hz, double noise_sigma);
+  // noise: coloured-noise profile (optional, must outlive the splitter); sigma is used where absent.
+  SubbandSplitter(const std::vector<double>& x, double sample_rate_hz, double noise_sigma,
+                  const NoiseProfile* noise = nullptr);
   ~SubbandSplitter();
   SubbandSplitter(const SubbandSplitter&) = delete;
   SubbandSplitter& operator=(const SubbandSplitter&) = delete;
@@ -44,6 +49,10 @@ class SubbandSplitter {
   double fs_ = 0.0, bin_hz_ = 0.0, sigma_ = 0.0;
   std::vector<std::complex<double>> spectrum_;  // bins 0..fft_size/2
   std::map<std::size_t, std::unique_ptr<Plan>> plans_;
+  const NoiseProfile* noise_ = nullptr;
+  double variance(double lo_hz, double hi_hz) const {
+    return noise_ ? std::max(sigma_ * sigma_, noise_->max_variance(lo_hz, hi_hz)) : sigma_ * sigma_;
+  }
 };
 
 // Smallest n >= at_least whose only prime factors are 2, 3, 5, 7 (fast FFTW sizes).

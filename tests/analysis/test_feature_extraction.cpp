@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <random>
 
 #include "analysis/feature_extraction.hpp"
 #include "extraction_fixtures.hpp"
@@ -67,14 +68,72 @@ TEST(FeatureExtraction, RandomImpactsAt40dBSnr) {
   const double recall = double(found) / double(eligible);
   std::printf("recall %.4f (%zu/%zu), extracted %zu, median rel err: freq %.3g decay %.3g amp %.3g\n",
               recall, found, eligible, extracted, median(freq_err), median(decay_err), median(amp_err));
-  // Goal (issue 3): >= 0.95. Not reached yet: heavily damped (d > 100 1/s) modes crowded below
-  // ~300 Hz are still missed (0.874 measured on these 12 seeds). This bound guards the level reached.
-  EXPECT_GE(recall, 0.85);
+  // Goal (issue 3): >= 0.95. Not reached yet: 0.898 measured on these 12 seeds (0.917 on seeds
+  // 13-30). Almost every miss is a heavily damped mode (d > 100 1/s, mostly below ~450 Hz) with a
+  // comparable neighbour closer than ~0.35 (d1 + d2) / 2 pi in frequency: overlapping Lorentzians
+  // that merge into one fitted mode, or pairs (|df| < 0.1 (d1 + d2) / 2 pi) that no estimator
+  // separates at this SNR. This bound guards the level reached.
+  EXPECT_GE(recall, 0.89);
   EXPECT_LE(median(freq_err), 0.0005);
   EXPECT_LE(median(decay_err), 0.03);
   EXPECT_LE(median(amp_err), 0.05);
   // Few spurious features: the extracted count stays close to the true count.
   EXPECT_LE(double(extracted), 1.15 * double(eligible));
+}
+
+// Coloured noise: the noise floor and the order selection assume white noise. With pink-ish noise
+// (three one-pole lowpasses, ~-3 dB/octave over 40 Hz-10 kHz) at 40 dB SNR the strong modes (within
+// 20 dB of the strongest) must still be found, and the result must not fill up with noise modes.
+TEST(FeatureExtraction, PinkNoiseAt40dBSnrKeepsTheStrongModes) {
+  std::size_t eligible = 0, found = 0, extracted = 0, modes = 0;
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    const ModalModel truth = testing::random_impact(seed);
+    const auto clean = render_reference(truth, {}, kFs, std::size_t(2.0 * kFs));
+    std::mt19937_64 rng(seed + 1000);
+    std::normal_distribution<double> white(0.0, 1.0);
+    std::vector<double> pink(clean.size());
+    double b0 = 0.0, b1 = 0.0, b2 = 0.0, pink_power = 0.0, clean_power = 0.0;
+    for (std::size_t n = 0; n < pink.size(); ++n) {  // Kellet's economy pink filter
+      const double w = white(rng);
+      b0 = 0.99765 * b0 + 0.0990460 * w;
+      b1 = 0.96300 * b1 + 0.2965164 * w;
+      b2 = 0.57000 * b2 + 1.0526913 * w;
+      pink[n] = b0 + b1 + b2 + 0.1848 * w;
+      pink_power += pink[n] * pink[n];
+      clean_power += clean[n] * clean[n];
+    }
+    const double gain = std::sqrt(clean_power / pink_power / 1e4);  // 40 dB under the clean power
+    std::vector<float> x(clean.size());
+    for (std::size_t n = 0; n < x.size(); ++n) x[n] = float(clean[n] + gain * pink[n]);
+    const ExtractedFeatures got = extract_features(x, kFs);
+    extracted += got.modes.size();
+    modes += truth.modes.size();
+    double strongest = 0.0;
+    for (const auto& m : truth.modes) strongest = std::max(strongest, m.amp);
+    std::size_t case_found = 0, case_eligible = 0;
+    for (const auto& m : truth.modes) {
+      if (m.amp < strongest * 0.1) continue;  // within 20 dB of the strongest
+      ++case_eligible;
+      const Mode* e = nearest(got.modes, m.freq_hz);
+      if (matches(e, m.freq_hz)) ++case_found;
+      else std::printf("  pink seed %d missed f=%.1f d=%.2f a=%.4g (nearest %.1f d %.1f)\n", int(seed), m.freq_hz,
+                       m.decay_per_s, m.amp, e ? e->freq_hz : 0.0, e ? e->decay_per_s : 0.0);
+    }
+    std::printf("pink seed %d: %zu/%zu strong found, %zu extracted of %zu true\n", int(seed), case_found,
+                case_eligible, got.modes.size(), truth.modes.size());
+    EXPECT_FALSE(got.modes.empty()) << seed;
+    eligible += case_eligible;
+    found += case_found;
+  }
+  const double recall = double(found) / double(eligible);
+  std::printf("pink recall %.4f (%zu/%zu), extracted %zu of %zu true modes\n", recall, found, eligible,
+              extracted, modes);
+  // Goal: >= 0.90. Reached 0.889 (128/144). 10 of the 16 misses are missed with white noise too
+  // (crowded heavily damped modes, see above); the other 6 lie below 300 Hz, where this noise is
+  // 10-16 dB stronger than white noise of the same power. This bound guards the level reached; the
+  // count bound shows the per-band noise profile keeps noise modes out (without it: 894 extracted).
+  EXPECT_GE(recall, 0.87);
+  EXPECT_LE(double(extracted), 1.15 * double(modes));
 }
 
 }  // namespace
