@@ -170,12 +170,14 @@ ExtractedFeatures extract_features(const std::vector<float>& samples, double fs,
   const std::size_t onset = find_onset(x, out.noise_sigma);
   out.onset_s = double(std::min(onset, x.size())) / fs;
   if (onset + std::size_t(0.01 * fs) >= x.size()) return out;
-  const std::size_t frames = std::min(x.size() - onset, std::size_t(options.max_duration_s * fs));
-  std::vector<double> s(x.begin() + std::ptrdiff_t(onset), x.begin() + std::ptrdiff_t(onset + frames));
-  // A tiny floor keeps the order selection sane on noiseless (synthetic) input.
+  const std::size_t skip = std::size_t(std::llround(options.skip_contact_s * fs));
+  const std::size_t start = std::min(onset + skip, x.size());
+  const std::size_t frames = std::min(x.size() - start, std::size_t(options.max_duration_s * fs));
+  std::vector<double> s(x.begin() + std::ptrdiff_t(start), x.begin() + std::ptrdiff_t(start + frames));
+  // A floor keeps the order selection sane on noiseless (synthetic) input.
   double peak = 0.0;
   for (double v : s) peak = std::max(peak, std::abs(v));
-  const double sigma = std::max(out.noise_sigma, 1e-7 * peak);
+  const double sigma = std::max(out.noise_sigma, std::pow(10.0, -options.max_dynamic_range_db / 20.0) * peak);
   const double top_hz = 0.49 * fs;
 
   const std::size_t early = std::min(frames, std::size_t(options.wide_window_s * fs));
@@ -241,13 +243,16 @@ ExtractedFeatures extract_features(const std::vector<float>& samples, double fs,
   for (int pass = 0; pass < 2; ++pass) {
     std::erase_if(comps, [&](const DampedComponent& c) {
       const double d = -c.s.real() * fs, f = c.s.imag() * fs / kTwoPi;
-      if (d < options.hum_decay_per_s || f < options.min_freq_hz || f >= 0.5 * fs) return true;
+      if (d < options.hum_decay_per_s || d > options.max_decay_per_s || f < options.min_freq_hz ||
+          f >= 0.5 * fs)
+        return true;
       return !audible(c);
     });
     if (pass == 0) refine_poles(s, comps, ro);
     else fit_amplitudes(s, comps);
   }
-  for (const auto& c : comps) {
+  for (auto& c : comps) {
+    c.b *= std::exp(-c.s * double(skip));  // amplitude at the onset, not at the end of the contact
     Mode m;
     m.freq_hz = c.s.imag() * fs / kTwoPi;
     m.decay_per_s = -c.s.real() * fs;

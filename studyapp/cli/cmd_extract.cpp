@@ -17,6 +17,7 @@ namespace ms::cli {
 
 void register_extract(CLI::App& app) {
   struct Options {
+    double skip_contact_ms = 0.5;  // real strikes have a contact; 0 for ideal impulses
     std::vector<std::string> inputs;
     std::string output;
     int channel = -1;
@@ -27,6 +28,10 @@ void register_extract(CLI::App& app) {
   cmd->add_option("wav", opt->inputs, "Recordings (WAV/FLAC/AIFF)")->required();
   cmd->add_option("-o,--output", opt->output, "Write FEATURES.csv (sound,freq_hz,decay_per_s,amp)");
   cmd->add_option("--channel", opt->channel, "0-based channel to analyse (default: mix to mono)");
+  cmd->add_option("--skip-contact-ms", opt->skip_contact_ms,
+                  "Start fitting this long after the onset (the strike's contact is not modal); "
+                  "amplitudes are extrapolated back to the onset (default 0.5; 0 for ideal impulses)")
+      ->check(CLI::Range(0.0, 20.0));
   cmd->add_flag("--json", opt->json, "Print one JSON object with every sound's modes");
   cmd->callback([opt] {
     std::vector<std::pair<std::string, ExtractedFeatures>> results;
@@ -39,7 +44,9 @@ void register_extract(CLI::App& app) {
       const std::vector<float> x = mono(audio, opt->channel);
       if (auto problem = recording_problem(x, audio.sample_rate_hz))
         throw InputError(SourceLocation{path, 0, 0}, *problem);
-      ExtractedFeatures f = extract_features(x, audio.sample_rate_hz);
+      ExtractOptions options;
+      options.skip_contact_s = opt->skip_contact_ms * 1e-3;
+      ExtractedFeatures f = extract_features(x, audio.sample_rate_hz, options);
       if (f.modes.empty()) throw InputError(SourceLocation{path, 0, 0}, "no modes found above the noise floor");
       results.emplace_back(std::filesystem::path(path).stem().string(), std::move(f));
     }
