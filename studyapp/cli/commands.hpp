@@ -11,5 +11,6 @@ void register_materials(CLI::App& app);
 void register_fit_damping(CLI::App& app);
 void register_extract(CLI::App& app);
 void register_prune(CLI::App& app);
+void register_plot(CLI::App& app);
 
 }  // namespace ms::cli
