@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <numbers>
 #include <random>
 
 #include "analysis/damping_features.hpp"
@@ -96,7 +97,7 @@ void plot_masking_model(const ModalModel& model, const PruneResult& r, const std
   plots::masking_plot(output, freq_hz, r.level_db, r.masking_db, r.quiet_db, kept, o);
 }
 
-// ---- built-in examples (made-up but plausible numbers; seeds fixed so the pictures never change) ----
+// ---- built-in examples: made-up but plausible numbers, fixed seeds (same pictures with one std library) ----
 
 void demo(const std::string& dir, const std::string& ext) {
   auto out = [&](const std::string& name) { return (fs::path(dir) / (name + ext)).string(); };
@@ -180,7 +181,7 @@ void demo(const std::string& dir, const std::string& ext) {
   std::normal_distribution<double> noise(0.0, 1.0);
   std::vector<DampingPoint> points;
   for (int i = 0; i < 90; ++i) {
-    const double omega = 2 * M_PI * std::exp(freq_log(rng2)), lambda = omega * omega;
+    const double omega = 2 * std::numbers::pi * std::exp(freq_log(rng2)), lambda = omega * omega;
     points.push_back({lambda, std::max(0.5, damping_c_per_s(truth, lambda) + support(rng2) + noise(rng2))});
   }
   std::vector<double> lambda, c;

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <filesystem>
 #include <functional>
+#include <numbers>
 #include <limits>
 
 #include "studyapp/plots/plots.hpp"
@@ -112,7 +113,7 @@ std::vector<Kind> kinds() {
                [](const std::string& path, const PlotOptions& o) {
                  std::vector<double> lambda, c;
                  for (int i = 1; i <= 30; ++i) {
-                   const double omega = 2 * M_PI * 100.0 * i;
+                   const double omega = 2 * std::numbers::pi * 100.0 * i;
                    lambda.push_back(omega * omega);
                    c.push_back(4 + 1e-4 * std::pow(omega, 1.2) + (i % 5));
                  }
