@@ -12,5 +12,6 @@ void register_fit_damping(CLI::App& app);
 void register_extract(CLI::App& app);
 void register_prune(CLI::App& app);
 void register_stats(CLI::App& app);
+void register_plot(CLI::App& app);
 
 }  // namespace ms::cli
