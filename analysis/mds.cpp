@@ -51,29 +51,47 @@ ClassicalMds classical_mds(const Eigen::MatrixXd& dissimilarity, int dims) {
 
 namespace {
 
-// One SMACOF run from `x` (modified in place); returns the final raw stress.
+// One SMACOF run from `x` (modified in place); returns the raw stress of the final `x`.
+// Each iteration is one pass over the pairs i < j, column j of the upper triangle at a time, as
+// Eigen array expressions over i = 0..j-1 (SIMD, including the reductions): the distances d_ij,
+// the stress terms (delta_ij - d_ij)^2, and the Guttman transform written without the matrix B,
+//   (B(X)X)_i = sum_{j != i} w_ij (x_i - x_j),  w_ij = delta_ij / d_ij (0 when d_ij = 0),
+// accumulated into Y for i and, with the opposite sign, for j. Buffers are allocated once; nothing
+// is allocated inside the loop; O(n^2 K) per iteration.
+// The stress computed in a pass is that of the configuration the pass transforms, so the stopping
+// test compares sigma(X_k) with sigma(X_{k-1}) and, when it fires, returns X_k unchanged.
 double smacof_run(const Eigen::MatrixXd& delta, Eigen::MatrixXd& x, const SmacofOptions& o, int& iterations) {
-  const Eigen::Index n = delta.rows();
-  Eigen::MatrixXd bx(n, n);
-  double stress = raw_stress(delta, x);
+  const Eigen::Index n = delta.rows(), k_dims = x.cols();
+  Eigen::MatrixXd y(n, k_dims);
+  Eigen::ArrayXd dist(n), weight(n), diff(n);
+  const double inv_n = 1.0 / double(n);
+  double previous = std::numeric_limits<double>::infinity();
+  double stress = 0;
   iterations = 0;
-  for (int it = 0; it < o.max_iterations; ++it) {
-    const Eigen::MatrixXd d = pairwise_distances(x);
-    for (Eigen::Index i = 0; i < n; ++i) {
-      double diag = 0;
-      for (Eigen::Index j = 0; j < n; ++j) {
-        if (i == j) continue;
-        bx(i, j) = d(i, j) > 0 ? -delta(i, j) / d(i, j) : 0.0;
-        diag -= bx(i, j);
+  for (int it = 0;; ++it) {
+    y.setZero();
+    stress = 0;
+    for (Eigen::Index j = 1; j < n; ++j) {
+      auto d = dist.head(j);
+      auto w = weight.head(j);
+      auto dk = diff.head(j);
+      d = (x.col(0).head(j).array() - x(j, 0)).square();
+      for (Eigen::Index k = 1; k < k_dims; ++k) d += (x.col(k).head(j).array() - x(j, k)).square();
+      d = d.sqrt();
+      const auto del = delta.col(j).head(j).array();
+      stress += (del - d).square().sum();
+      w = (d > 0).select(del / d, 0.0);
+      for (Eigen::Index k = 0; k < k_dims; ++k) {
+        dk = w * (x.col(k).head(j).array() - x(j, k));
+        y.col(k).head(j).array() += dk;
+        y(j, k) -= dk.sum();
       }
-      bx(i, i) = diag;
     }
-    x = bx * x / double(n);  // Guttman transform
-    const double next = raw_stress(delta, x);
+    if ((it > 0 && previous - stress <= o.tolerance * previous) || it >= o.max_iterations) break;
+    previous = stress;
     iterations = it + 1;
-    const bool done = stress - next <= o.tolerance * stress;
-    stress = next;
-    if (done) break;
+    x.swap(y);
+    x *= inv_n;  // Guttman transform X <- (1/n) B(X) X
   }
   return stress;
 }

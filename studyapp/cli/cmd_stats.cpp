@@ -1,4 +1,4 @@
-// modalstudy stats anova|ttest|confusion|mushra|ab|staircase ...: statistics of perceptual studies
+// modalstudy stats anova|ttest|confusion|mushra|ab|staircase|mds|magnitude ...: statistics of perceptual studies
 // from tidy CSV files (one row per response). Each prints a table, or one JSON object with --json.
 #include <nlohmann/json.hpp>
 
@@ -16,6 +16,7 @@
 #include "analysis/binomial_test.hpp"
 #include "analysis/confusion.hpp"
 #include "analysis/dissimilarity_matrix.hpp"
+#include "analysis/magnitude_estimation.hpp"
 #include "analysis/mds.hpp"
 #include "analysis/mushra.hpp"
 #include "analysis/rm_anova.hpp"
@@ -731,7 +732,7 @@ void register_mds(CLI::App& group) {
   struct Options {
     std::string data, method = "classical", output;
     std::vector<std::string> pairs;
-    int dims = 2, starts = 4;
+    int dims = 2, starts = 3;
     std::uint64_t seed = 1;
     bool json = false;
   };
@@ -808,6 +809,101 @@ void register_mds(CLI::App& group) {
   });
 }
 
+void register_magnitude(CLI::App& group) {
+  struct Options {
+    std::string data, subject = "subject", first = "a", second = "b", rating = "rating", modulus_a, modulus_b, output;
+    int dims = 2, starts = 3;
+    std::uint64_t seed = 1;
+    bool json = false;
+  };
+  auto opt = std::make_shared<Options>();
+  CLI::App* cmd = group.add_subcommand(
+      "magnitude",
+      "Magnitude estimation of dissimilarity: per-listener modulus normalisation, geometric means per pair, "
+      "dissimilarity matrix and metric SMACOF map");
+  cmd->add_option("data", opt->data, "Ratings CSV, one row per rated pair")->required();
+  cmd->add_option("--subject", opt->subject, "Listener column")->capture_default_str();
+  cmd->add_option("--a", opt->first, "First token column")->capture_default_str();
+  cmd->add_option("--b", opt->second, "Second token column")->capture_default_str();
+  cmd->add_option("--rating", opt->rating, "Magnitude estimate column (> 0)")->capture_default_str();
+  cmd->add_option("--modulus-a", opt->modulus_a,
+                  "Modulus pair, first token: each listener's ratings are scaled so this pair is rated 10 "
+                  "(without a modulus pair: each listener scaled to the grand geometric mean)");
+  cmd->add_option("--modulus-b", opt->modulus_b, "Modulus pair, second token");
+  cmd->add_option("--dims", opt->dims, "Dimensions of the map")->check(CLI::Range(1, 10))->capture_default_str();
+  cmd->add_option("--starts", opt->starts, "SMACOF random starts besides the classical one")
+      ->check(CLI::Range(0, 1000))
+      ->capture_default_str();
+  cmd->add_option("--seed", opt->seed, "Seed of the random starts")->capture_default_str();
+  cmd->add_option("-o,--output", opt->output, "Write the dissimilarity matrix as square CSV (input of `stats mds`)");
+  cmd->add_flag("--json", opt->json, "Print one JSON object");
+  cmd->callback([opt] {
+    if (opt->modulus_a.empty() != opt->modulus_b.empty())
+      throw InputError(SourceLocation{}, "--modulus-a and --modulus-b go together: give both tokens of the modulus pair");
+    const TidyCsv table = TidyCsv::read(opt->data);
+    MagnitudeOptions mo;
+    if (!opt->modulus_a.empty()) mo.modulus = {opt->modulus_a, opt->modulus_b};
+    const MagnitudeEstimation m =
+        magnitude_estimation(table, {opt->subject, opt->first, opt->second, opt->rating}, mo);
+    if (std::size_t(opt->dims) >= m.labels.size())
+      throw InputError(SourceLocation{}, "--dims " + std::to_string(opt->dims) + ": need fewer dimensions than the " +
+                                             std::to_string(m.labels.size()) + " tokens");
+    SmacofOptions so;
+    so.dims = opt->dims;
+    so.random_starts = opt->starts;
+    so.seed = opt->seed;
+    const SmacofResult map = smacof(m.dissimilarity, so);
+    if (!opt->output.empty()) {
+      std::string csv = "token";
+      for (const auto& l : m.labels) csv += "," + l;
+      csv += "\n";
+      for (std::size_t i = 0; i < m.labels.size(); ++i) {
+        csv += m.labels[i];
+        for (std::size_t j = 0; j < m.labels.size(); ++j)
+          csv += "," + fmt("%.17g", m.dissimilarity(Eigen::Index(i), Eigen::Index(j)));
+        csv += "\n";
+      }
+      write_file_atomically(opt->output, csv);
+    }
+    if (opt->json) {
+      nlohmann::json listeners = nlohmann::json::array();
+      for (const auto& l : m.listeners)
+        listeners.push_back({{"subject", l.subject}, {"ratings", l.ratings}, {"factor", l.factor},
+                             {"modulus_rating", num_json(l.modulus_rating)}, {"geometric_mean", l.geometric_mean}});
+      nlohmann::json self = nlohmann::json::array();
+      for (double v : m.self_ratings) self.push_back(num_json(v));
+      nlohmann::json j = {{"labels", m.labels},
+                          {"normalisation", m.modulus ? "modulus" : "geometric_mean"},
+                          {"modulus", m.modulus ? nlohmann::json{opt->modulus_a, opt->modulus_b} : nlohmann::json(nullptr)},
+                          {"modulus_value", mo.modulus_value},
+                          {"grand_geometric_mean", m.grand_geometric_mean},
+                          {"listeners", listeners},
+                          {"self_ratings", self},
+                          {"dissimilarity", matrix_json(m.dissimilarity)},
+                          {"dims", opt->dims},
+                          {"coords", matrix_json(map.points)},
+                          {"stress1", map.stress1},
+                          {"raw_stress", map.raw_stress},
+                          {"starts", opt->starts + 1},
+                          {"seed", opt->seed}};
+      std::cout << j.dump() << "\n";
+      return;
+    }
+    std::printf("magnitude estimation: %zu listeners, %zu tokens, normalised by %s\n", m.listeners.size(),
+                m.labels.size(),
+                m.modulus ? ("the modulus pair (" + opt->modulus_a + ", " + opt->modulus_b + ") = 10").c_str()
+                          : "each listener's geometric mean");
+    for (const auto& l : m.listeners)
+      std::printf("  %-16s %4zu ratings  factor %.4g\n", l.subject.c_str(), l.ratings, l.factor);
+    std::printf("SMACOF map in %d dimensions: stress-1 = %.4f\n", opt->dims, map.stress1);
+    for (std::size_t i = 0; i < m.labels.size(); ++i) {
+      std::printf("%-20s", m.labels[i].c_str());
+      for (int k = 0; k < opt->dims; ++k) std::printf(" %10.4f", map.points(Eigen::Index(i), k));
+      std::printf("\n");
+    }
+  });
+}
+
 }  // namespace
 
 void register_stats(CLI::App& app) {
@@ -820,6 +916,7 @@ void register_stats(CLI::App& app) {
   register_ab(*group);
   register_staircase(*group);
   register_mds(*group);
+  register_magnitude(*group);
 }
 
 }  // namespace ms::cli

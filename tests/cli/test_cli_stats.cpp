@@ -349,3 +349,71 @@ TEST(CliStatsMds, BadInput) {
   for (const auto& c : cases) expect_bad(dir, c);
   EXPECT_FALSE(std::filesystem::exists(dir.file("never.csv")));
 }
+
+// stats magnitude on the seeded Experiment-3-shaped study (tests/data/magnitude/make_golden.py):
+// the JSON matrix equals numpy's, the map's stress is no worse than SMACOF from the classical start
+// alone, and -o writes a square matrix that `stats mds` reads back to the same map.
+TEST(CliStatsMagnitude, JsonEqualsNumpyGoldenAndMatrixRoundTrips) {
+  test::TempDir dir;
+  const std::string matrix = dir.file("matrix.csv");
+  const auto r = test::run_cli("stats magnitude " + kData + "magnitude/ratings.csv --subject listener --a first "
+                               "--b second --rating rating --modulus-a real --modulus-b m1 --dims 2 --json -o " + matrix,
+                               dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  std::ifstream in(kData + "magnitude/golden.json");
+  const auto g = nlohmann::json::parse(in);
+  const auto labels = j["labels"].get<std::vector<std::string>>();
+  const auto glabels = g["labels"].get<std::vector<std::string>>();
+  ASSERT_EQ(labels.size(), 12u);
+  auto gi = [&](const std::string& l) { return std::size_t(std::find(glabels.begin(), glabels.end(), l) - glabels.begin()); };
+  for (std::size_t a = 0; a < 12; ++a)
+    for (std::size_t b = 0; b < 12; ++b)
+      expect_rel(j["dissimilarity"][a][b].get<double>(), g["dissimilarity_modulus"][gi(labels[a])][gi(labels[b])].get<double>(),
+                 labels[a] + "-" + labels[b]);
+  EXPECT_EQ(j["normalisation"], "modulus");
+  ASSERT_EQ(j["listeners"].size(), 8u);
+  for (std::size_t l = 0; l < 8; ++l) {
+    EXPECT_EQ(j["listeners"][l]["subject"], g["listeners"][l]);
+    expect_rel(j["listeners"][l]["factor"].get<double>(), g["factor_modulus"][l].get<double>(), "factor");
+  }
+  ASSERT_EQ(j["coords"].size(), 12u);
+  ASSERT_EQ(j["coords"][0].size(), 2u);
+  const double s1 = j["stress1"].get<double>();
+  // The CLI stops at a relative stress change of 1e-8 (the golden at 1e-13): allow that slack.
+  EXPECT_LE(s1, g["smacof_classical_start"]["stress1"].get<double>() + 1e-6);
+  EXPECT_GT(s1, 0.02);  // noisy ratings do not fit a plane exactly
+  // Round trip: the written matrix, scaled by stats mds with the same seed and starts, gives the same stress.
+  const auto mds = test::run_cli("stats mds " + matrix + " --method smacof --json", dir);
+  ASSERT_EQ(mds.exit_code, 0) << mds.err;
+  EXPECT_NEAR(nlohmann::json::parse(mds.out)["stress1"].get<double>(), s1, 1e-12);
+  // Without a modulus: geometric-mean normalisation.
+  const auto gm = test::run_cli("stats magnitude " + kData + "magnitude/ratings.csv --subject listener --a first "
+                                "--b second --rating rating --json", dir);
+  ASSERT_EQ(gm.exit_code, 0) << gm.err;
+  const auto jg = nlohmann::json::parse(gm.out);
+  EXPECT_EQ(jg["normalisation"], "geometric_mean");
+  expect_rel(jg["dissimilarity"][0][1].get<double>(),
+             g["dissimilarity_geometric"][gi(labels[0])][gi(labels[1])].get<double>(), "geometric");
+  // The printed table names the normalisation and the stress.
+  const auto text = test::run_cli("stats magnitude " + kData + "magnitude/ratings.csv --subject listener --a first "
+                                  "--b second --rating rating --modulus-a real --modulus-b m1", dir);
+  EXPECT_NE(text.out.find("the modulus pair (real, m1) = 10"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("stress-1 = "), std::string::npos);
+}
+
+TEST(CliStatsMagnitude, BadInput) {
+  test::TempDir dir;
+  const std::string zero = dir.write("zero.csv", "subject,a,b,rating\nA,x,y,1\nA,x,z,0\nA,y,z,2\n");
+  const std::string gap = dir.write("gap.csv", "subject,a,b,rating\nA,x,y,1\nA,x,z,3\nA,w,x,2\n");
+  const BadCase cases[] = {
+      {"stats magnitude " + zero + " -o " + dir.file("never.csv"),
+       "zero.csv:3:7: column 'rating': magnitude estimates must be positive (got 0)"},
+      {"stats magnitude " + gap + " -o " + dir.file("never.csv"), "gap.csv:1:1: the pair (y, z) was never rated"},
+      {"stats magnitude " + gap + " --rating score", "gap.csv:1:"},
+      {"stats magnitude " + gap + " --modulus-a x", "--modulus-a and --modulus-b go together"},
+      {"stats magnitude " + gap + " --modulus-a x --modulus-b q", "modulus token 'q' does not occur"},
+  };
+  for (const auto& c : cases) expect_bad(dir, c);
+  EXPECT_FALSE(std::filesystem::exists(dir.file("never.csv")));
+}
