@@ -17,6 +17,7 @@
 #include "analysis/confusion.hpp"
 #include "analysis/dissimilarity_matrix.hpp"
 #include "analysis/magnitude_estimation.hpp"
+#include "studyapp/plots/plots.hpp"
 #include "analysis/mds.hpp"
 #include "analysis/mushra.hpp"
 #include "analysis/rm_anova.hpp"
@@ -287,7 +288,7 @@ void print_confusion(const Confusion& c, const std::string& title) {
 
 void register_confusion(CLI::App& group) {
   struct Options {
-    std::string data, truth, response, compare;
+    std::string data, truth, response, compare, plot;
     std::vector<std::string> labels;
     double conf_level = 0.95;
     bool json = false;
@@ -302,8 +303,10 @@ void register_confusion(CLI::App& group) {
   cmd->add_option("--labels", opt->labels, "Class order, comma separated (default: sorted)");
   cmd->add_option("--conf-level", opt->conf_level, "Level of the recall-difference intervals")
       ->check(CLI::Range(0.5, 0.9999));
+  cmd->add_option("--plot", opt->plot, "Also draw the (first) matrix as a heat map: FILE.png or FILE.svg");
   cmd->add_flag("--json", opt->json, "Print one JSON object");
   cmd->callback([opt] {
+    if (!opt->plot.empty()) plots::check_output_path(opt->plot);
     std::vector<std::string> labels = split_commas(opt->labels);
     for (std::size_t i = 0; i < labels.size(); ++i)
       for (std::size_t k = 0; k < i; ++k)
@@ -320,6 +323,17 @@ void register_confusion(CLI::App& group) {
       labels.assign(all.begin(), all.end());
     }
     const Confusion ca = confusion_from_pairs(labels, a.truth, a.response);
+    if (!opt->plot.empty()) {
+      const Eigen::MatrixXd pct = row_percent(ca.counts);
+      std::vector<std::vector<double>> rows(labels.size(), std::vector<double>(labels.size()));
+      for (std::size_t i = 0; i < labels.size(); ++i)
+        for (std::size_t k = 0; k < labels.size(); ++k) rows[i][k] = pct(Eigen::Index(i), Eigen::Index(k));
+      plots::PlotOptions po;
+      po.title = "Identification: " + opt->data;
+      po.x_label = "Response (" + opt->response + ")";
+      po.y_label = "Presented (" + opt->truth + ")";
+      plots::confusion_heatmap(opt->plot, labels, rows, po);
+    }
     if (opt->compare.empty()) {
       if (opt->json) std::cout << confusion_json(ca).dump() << "\n";
       else print_confusion(ca, opt->data);
@@ -378,7 +392,7 @@ nlohmann::json stat_json(const MushraStat& s) {
 
 void register_mushra(CLI::App& group) {
   struct Options {
-    std::string data, subject, item, condition, rating;
+    std::string data, subject, item, condition, rating, plot;
     MushraOptions m;
     bool anchors_given = false, json = false;
   };
@@ -395,8 +409,10 @@ void register_mushra(CLI::App& group) {
   cmd->add_flag("--screen-anchors", opt->m.screen_anchors,
                 "Also exclude assessors rating an anchor above 90 in more than 15% of items");
   cmd->add_option("--conf-level", opt->m.conf_level, "Confidence level")->check(CLI::Range(0.5, 0.9999));
+  cmd->add_option("--plot", opt->plot, "Also draw box plots with means and CIs: FILE.png or FILE.svg");
   cmd->add_flag("--json", opt->json, "Print one JSON object");
   cmd->callback([opt] {
+    if (!opt->plot.empty()) plots::check_output_path(opt->plot);
     const TidyCsv table = TidyCsv::read(opt->data);
     const std::size_t cs = pick_column(table, opt->subject, {"participant", "subject", "session_uuid"});
     const std::size_t ci = pick_column(table, opt->item, {"trial", "item", "trial_id"});
@@ -428,6 +444,29 @@ void register_mushra(CLI::App& group) {
           throw InputError(where_condition, "--anchor: no condition named '" + a + "' in column '" + table.header()[cc] + "'");
     }
     const MushraResult res = mushra_analyse(ratings, opt->m);
+    if (!opt->plot.empty()) {
+      // Boxes of the ratings of the assessors kept by post-screening.
+      std::set<std::string> kept;
+      for (const auto& a : res.assessors)
+        if (!a.excluded) kept.insert(a.subject);
+      std::vector<std::string> names;
+      std::vector<std::vector<double>> values;
+      std::vector<double> means, lows, highs;
+      for (const auto& c : res.conditions) {
+        names.push_back(c.condition);
+        values.emplace_back();
+        for (const auto& r : ratings)
+          if (r.condition == c.condition && kept.count(r.subject)) values.back().push_back(r.rating);
+        means.push_back(c.n ? c.mean : std::nan(""));
+        lows.push_back(c.ci_low.value_or(std::nan("")));
+        highs.push_back(c.ci_high.value_or(std::nan("")));
+      }
+      plots::PlotOptions po;
+      po.title = "MUSHRA: " + opt->data + " (" + std::to_string(res.included) + " assessors kept)";
+      po.x_label = "Condition";
+      po.y_label = "Rating (0-100)";
+      plots::mushra_boxplot(opt->plot, names, values, means, lows, highs, po);
+    }
     std::vector<std::string> notices;
     if (res.averaged)
       notices.push_back(std::to_string(res.averaged) +
@@ -730,7 +769,7 @@ void register_staircase(CLI::App& group) {
 
 void register_mds(CLI::App& group) {
   struct Options {
-    std::string data, method = "classical", output;
+    std::string data, method = "classical", output, plot;
     std::vector<std::string> pairs;
     int dims = 2, starts = 3;
     std::uint64_t seed = 1;
@@ -749,8 +788,13 @@ void register_mds(CLI::App& group) {
       ->check(CLI::Range(0, 1000));
   cmd->add_option("--seed", opt->seed, "Seed of the random starts")->capture_default_str();
   cmd->add_option("-o,--output", opt->output, "Write the configuration as CSV (label, dim1, ...)");
+  cmd->add_option("--plot", opt->plot, "Also draw the map (first two dimensions): FILE.png or FILE.svg");
   cmd->add_flag("--json", opt->json, "Print one JSON object");
   cmd->callback([opt] {
+    if (!opt->plot.empty()) {
+      plots::check_output_path(opt->plot);
+      if (opt->dims < 2) throw InputError(SourceLocation{"--plot", 0, 0}, "a map needs --dims 2 or more");
+    }
     const TidyCsv table = TidyCsv::read(opt->data);
     const std::vector<std::string> pairs = split_commas(opt->pairs);
     if (!opt->pairs.empty() && pairs.size() != 3)
@@ -790,6 +834,15 @@ void register_mds(CLI::App& group) {
         csv += "\n";
       }
       write_file_atomically(opt->output, csv);
+    }
+    if (!opt->plot.empty()) {
+      std::vector<plots::XY> xy;
+      for (Eigen::Index i = 0; i < points.rows(); ++i) xy.push_back({points(i, 0), points(i, 1)});
+      plots::PlotOptions po;
+      po.title = "MDS (" + opt->method + "): " + opt->data + ", stress-1 " + fmt("%.3f", extra["stress1"].get<double>());
+      po.x_label = "Dimension 1";
+      po.y_label = "Dimension 2";
+      plots::mds_map(opt->plot, xy, d.labels, po);
     }
     print_notices(notices, opt->data);
     if (opt->json) {

@@ -417,3 +417,27 @@ TEST(CliStatsMagnitude, BadInput) {
   for (const auto& c : cases) expect_bad(dir, c);
   EXPECT_FALSE(std::filesystem::exists(dir.file("never.csv")));
 }
+
+// --plot draws the picture of a statistic beside its numbers; a bad extension fails before any work.
+TEST(CliStatsPlot, ConfusionMdsAndMushraDrawPictures) {
+  test::TempDir dir;
+  const std::string data = std::string(MODALSTUDY_TEST_DATA) + "/";
+  const struct {
+    std::string args, file;
+  } cases[] = {
+      {"stats confusion " + data + "confusion/responses_recorded.csv --truth material --response answer",
+       "conf.png"},
+      {"stats mds " + data + "mds/dissimilarity.csv --method smacof", "map.svg"},
+      {"stats mushra " + data + "mushra/results.csv", "boxes.png"},
+  };
+  for (const auto& c : cases) {
+    const auto r = test::run_cli(c.args + " --plot " + dir.file(c.file), dir);
+    EXPECT_EQ(r.exit_code, 0) << c.args << "\n" << r.err;
+    ASSERT_TRUE(std::filesystem::exists(dir.file(c.file))) << c.args;
+    EXPECT_GT(std::filesystem::file_size(dir.file(c.file)), 2000u) << c.args;
+    const auto bad = test::run_cli(c.args + " --plot " + dir.file("x.gif"), dir);
+    EXPECT_EQ(bad.exit_code, 2) << c.args;
+    EXPECT_NE(bad.err.find("x.gif"), std::string::npos) << bad.err;
+    EXPECT_TRUE(bad.out.empty()) << "fails before printing statistics";
+  }
+}
