@@ -17,6 +17,8 @@
 #include "analysis/confusion.hpp"
 #include "analysis/dissimilarity_matrix.hpp"
 #include "analysis/magnitude_estimation.hpp"
+#include "analysis/method_of_limits.hpp"
+#include "analysis/quantile.hpp"
 #include "studyapp/plots/plots.hpp"
 #include "analysis/mds.hpp"
 #include "analysis/mushra.hpp"
@@ -959,6 +961,60 @@ void register_magnitude(CLI::App& group) {
 
 }  // namespace
 
+// modalstudy stats limits: descending method of limits (the 2002 study's a_v procedure) per track.
+void register_limits(CLI::App& group) {
+  struct Options {
+    std::string data, level, response, different = "different";
+    std::vector<std::string> track;
+    bool json = false;
+  };
+  auto opt = std::make_shared<Options>();
+  CLI::App* cmd = group.add_subcommand(
+      "limits", "Descending method of limits: the smallest level at which no change was heard, per track");
+  cmd->add_option("data", opt->data, "Tidy CSV, one row per trial, in presentation order")->required();
+  cmd->add_option("--level", opt->level, "Column of the level presented (falling, e.g. a_v in dB)")->required();
+  cmd->add_option("--response", opt->response, "Column of the answer")->required();
+  cmd->add_option("--different", opt->different, "Answer meaning 'heard a difference'")->capture_default_str();
+  cmd->add_option("--track", opt->track, "Column(s) identifying a series (e.g. participant,object)")->delimiter(',');
+  cmd->add_flag("--json", opt->json, "Print one JSON object");
+  cmd->callback([opt] {
+    const TidyCsv table = TidyCsv::read(opt->data);
+    const std::size_t cl = table.column(opt->level), cr = table.column(opt->response);
+    if (table.rows() == 0) throw InputError(SourceLocation{table.file(), 0, 0}, "no data rows");
+    nlohmann::json tracks = nlohmann::json::array();
+    std::vector<double> thresholds;
+    for (const auto& [name, rows] : group_rows(table, opt->track)) {
+      std::vector<double> levels;
+      std::vector<bool> different;
+      for (std::size_t i = 0; i < rows.size(); ++i) {
+        levels.push_back(table.number(rows[i], cl));
+        if (i > 0 && !(levels[i] < levels[i - 1]))
+          throw InputError(table.where(rows[i], cl), "column '" + opt->level + "': level " + table.cell(rows[i], cl) +
+                                                         " does not fall below the previous trial of its series");
+        different.push_back(table.cell(rows[i], cr) == opt->different);
+      }
+      const LimitsThreshold t = descending_limits_threshold(levels, different);
+      if (t.threshold && !t.censored) thresholds.push_back(*t.threshold);
+      tracks.push_back({{"track", name}, {"trials", levels.size()}, {"threshold", opt_json(t.threshold)},
+                        {"censored", t.censored},
+                        {"first_different_trial", t.first_different ? nlohmann::json(*t.first_different) : nlohmann::json()}});
+    }
+    nlohmann::json median = nullptr;
+    if (!thresholds.empty()) median = quantile(thresholds, 0.5);
+    if (opt->json) {
+      std::cout << nlohmann::json{{"tracks", tracks}, {"median", median}}.dump() << "\n";
+      return;
+    }
+    std::printf("%-24s %7s %10s\n", "Track", "trials", "threshold");
+    for (const auto& t : tracks) {
+      const std::string th = t["threshold"].is_null() ? "above start"
+                             : fmt("%g", t["threshold"].get<double>()) + (t["censored"].get<bool>() ? " (censored)" : "");
+      std::printf("%-24s %7zu %10s\n", t["track"].get<std::string>().c_str(), t["trials"].get<std::size_t>(), th.c_str());
+    }
+    if (!median.is_null()) std::printf("median threshold (uncensored series): %g\n", median.get<double>());
+  });
+}
+
 void register_stats(CLI::App& app) {
   CLI::App* group = app.add_subcommand("stats", "Statistics of perceptual studies from tidy CSV files");
   group->require_subcommand(1);
@@ -968,6 +1024,7 @@ void register_stats(CLI::App& app) {
   register_mushra(*group);
   register_ab(*group);
   register_staircase(*group);
+  register_limits(*group);
   register_mds(*group);
   register_magnitude(*group);
 }

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 #include "analysis/tidy_csv.hpp"
 #include "support/test_util.hpp"
@@ -440,4 +441,31 @@ TEST(CliStatsPlot, ConfusionMdsAndMushraDrawPictures) {
     EXPECT_NE(bad.err.find("x.gif"), std::string::npos) << bad.err;
     EXPECT_TRUE(bad.out.empty()) << "fails before printing statistics";
   }
+}
+
+// The 2002 study's Experiment 1 as trial series (a_v from 20 dB down in 1 dB steps until a difference
+// is heard): the descending method of limits gives back Table 1 and the pooled median a_v of 16 dB.
+TEST(CliStatsLimits, VanDenDoel2002Experiment1) {
+  test::TempDir dir;
+  const auto r = test::run_cli("stats limits " + kData + "vandendoel2002/experiment1_series.csv --level av_db "
+                               "--response answer --track object,subject --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["tracks"].size(), 16u);
+  EXPECT_EQ(j["median"], 16.0);
+  const TidyCsv table1 = TidyCsv::read(kData + "vandendoel2002/table1_av.csv");
+  std::map<std::string, double> expected;
+  for (std::size_t row = 0; row < table1.rows(); ++row)
+    expected[table1.cell(row, table1.column("object")) + "/" + table1.cell(row, table1.column("subject"))] =
+        table1.number(row, table1.column("av_db"));
+  for (const auto& t : j["tracks"]) {
+    const std::string key = t["track"].get<std::string>();
+    ASSERT_TRUE(expected.count(key)) << key;
+    EXPECT_EQ(t["threshold"].get<double>(), expected[key]) << key;
+  }
+  // A level that does not fall is named with its row and column.
+  const std::string bad = dir.write("bad.csv", "subject,av_db,answer\n1,20,same\n1,20,different\n");
+  const auto b = test::run_cli("stats limits " + bad + " --level av_db --response answer --track subject", dir);
+  EXPECT_EQ(b.exit_code, 2);
+  EXPECT_NE(b.err.find("bad.csv:3:3"), std::string::npos) << b.err;
 }

@@ -23,3 +23,8 @@ tests <- do.call(rbind, lapply(list(c("vase", "Vn", "Ve"), c("bowl", "Bn", "Be")
 }))
 write.csv(tests, "table2_tests_golden.csv", row.names = FALSE, quote = FALSE)
 print(med); print(tests)
+
+# experiment1_series.csv (written by hand from Table 1, see tests/cli/test_cli_stats.cpp): each
+# subject's a_v series falls from 20 dB in 1 dB steps, "same" down to their optimum, then one
+# "different". The descending method of limits must give back Table 1 and the pooled median 16 dB:
+#   median(c(5,16,15,17,14,18,15,3, 13,19,17,20,20,13,16,19)) == 16
