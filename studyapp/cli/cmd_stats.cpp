@@ -17,6 +17,7 @@
 #include "analysis/confusion.hpp"
 #include "analysis/dissimilarity_matrix.hpp"
 #include "analysis/magnitude_estimation.hpp"
+#include "analysis/mds_cityblock.hpp"
 #include "analysis/method_of_limits.hpp"
 #include "analysis/quantile.hpp"
 #include "studyapp/plots/plots.hpp"
@@ -782,8 +783,8 @@ void register_mds(CLI::App& group) {
   cmd->add_option("data", opt->data, "Square dissimilarity matrix CSV (label column + one column per stimulus)")
       ->required();
   cmd->add_option("--dims", opt->dims, "Dimensions of the map")->check(CLI::Range(1, 10))->capture_default_str();
-  cmd->add_option("--method", opt->method, "classical | smacof | nonmetric")
-      ->check(CLI::IsMember({"classical", "smacof", "nonmetric"}))
+  cmd->add_option("--method", opt->method, "classical | smacof | nonmetric | cityblock (metric SMACOF, L1 distances)")
+      ->check(CLI::IsMember({"classical", "smacof", "nonmetric", "cityblock"}))
       ->capture_default_str();
   cmd->add_option("--pairs", opt->pairs, "Read long form instead: FIRST,SECOND,VALUE columns (ratings averaged)");
   cmd->add_option("--starts", opt->starts, "Random starts besides the classical one (smacof, nonmetric)")
@@ -821,7 +822,9 @@ void register_mds(CLI::App& group) {
       o.dims = opt->dims;
       o.random_starts = opt->starts;
       o.seed = opt->seed;
-      const SmacofResult r = opt->method == "smacof" ? smacof(d.values, o) : smacof_nonmetric(d.values, o);
+      const SmacofResult r = opt->method == "smacof"      ? smacof(d.values, o)
+                             : opt->method == "cityblock" ? smacof_cityblock(d.values, o)
+                                                          : smacof_nonmetric(d.values, o);
       points = r.points;
       extra = {{"stress1", r.stress1}, {"raw_stress", r.raw_stress}, {"iterations", r.iterations},
                {"best_start", r.best_start}, {"starts", opt->starts + 1}, {"seed", opt->seed}};
