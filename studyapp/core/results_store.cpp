@@ -86,7 +86,11 @@ ResultsStore::ResultsStore(const std::string& path, Mode mode)
         if (!created_) check_header(path);
         int flags = mode == Mode::read_only ? SQLITE_OPEN_READONLY : SQLITE_OPEN_READWRITE;
         if (created_) flags |= SQLITE_OPEN_CREATE;
-        return sqlite::Database(path, flags);
+        try {
+          return sqlite::Database(path, flags);
+        } catch (const sqlite::Error& e) {  // e.g. a missing folder: the person's path is wrong
+          throw InputError(SourceLocation{path, 0, 0}, "cannot open results database: " + std::string(e.what()));
+        }
       }()) {
   try {
     sqlite::Statement probe(db_, "SELECT count(*) FROM sqlite_schema");

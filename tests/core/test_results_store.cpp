@@ -140,6 +140,7 @@ TEST(ResultsStore, ForeignFilesAreRefusedByNameAndLeftUntouched) {
 
   EXPECT_THROW(ResultsStore(dir.file("missing.sqlite"), ResultsStore::Mode::open_existing), InputError);
   EXPECT_FALSE(std::filesystem::exists(dir.file("missing.sqlite")));
+  EXPECT_THROW(ResultsStore(dir.file("no/such/folder/r.sqlite")), InputError);
 }
 
 TEST(ResultsStore, NewerSchemaVersionIsRefused) {
