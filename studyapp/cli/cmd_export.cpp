@@ -1,0 +1,34 @@
+// modalstudy export RESULTS.sqlite -o DIR: tidy responses.csv (one row per response) + study.json.
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+#include "studyapp/cli/commands.hpp"
+#include "studyapp/core/export.hpp"
+
+namespace ms::cli {
+
+void register_export(CLI::App& app) {
+  struct Options {
+    std::string db, out_dir;
+    bool json = false;
+  };
+  auto opt = std::make_shared<Options>();
+  CLI::App* cmd = app.add_subcommand(
+      "export", "Export a results database: DIR/responses.csv (tidy, one row per response) and DIR/study.json");
+  cmd->add_option("results", opt->db, "Results database (.sqlite) written by studyapp")->required();
+  cmd->add_option("-o,--output", opt->out_dir, "Output folder (created if missing)")->required();
+  cmd->add_flag("--json", opt->json, "Print one JSON object");
+  cmd->callback([opt] {
+    const ExportSummary s = export_results(opt->db, opt->out_dir);
+    if (opt->json)
+      std::cout << nlohmann::json{{"responses", s.responses}, {"csv", s.csv_path}, {"study_json", s.json_path}}.dump()
+                << "\n";
+    else
+      std::printf("exported %zu responses to %s and %s\n", s.responses, s.csv_path.c_str(), s.json_path.c_str());
+  });
+}
+
+}  // namespace ms::cli

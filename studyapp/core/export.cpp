@@ -1,0 +1,133 @@
+// Tidy export of a results database; see export.hpp.
+#include "studyapp/core/export.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <ctime>
+#include <filesystem>
+#include <map>
+
+#include "studyapp/core/results_store.hpp"
+#include "synthesis/atomic_file.hpp"
+#include "synthesis/input_error.hpp"
+
+namespace ms {
+
+namespace {
+
+// Single stimulus -> its name (so `stats confusion --truth stimuli` reads labels directly);
+// several -> names joined by ';' in presentation order.
+std::string stimuli_cell(const std::string& json_text) {
+  const auto j = nlohmann::json::parse(json_text);
+  std::string out;
+  for (const auto& s : j) out += (out.empty() ? "" : ";") + s.get<std::string>();
+  return out;
+}
+
+// A JSON string answer becomes its plain text ("metal", not "\"metal\""); numbers and structured
+// answers (MUSHRA ratings per condition) stay compact JSON.
+std::string response_cell(const std::string& json_text) {
+  const auto j = nlohmann::json::parse(json_text);
+  return j.is_string() ? j.get<std::string>() : j.dump();
+}
+
+std::string number_cell(double v) {
+  nlohmann::json j = v;  // shortest round-trip representation, as JSON prints it
+  return j.dump();
+}
+
+}  // namespace
+
+std::string csv_field(const std::string& value) {
+  if (value.find_first_of(",\"\r\n") == std::string::npos) return value;
+  std::string out = "\"";
+  for (char c : value) {
+    if (c == '"') out += '"';
+    out += c;
+  }
+  return out + "\"";
+}
+
+std::string iso8601_utc(std::int64_t unix_ms) {
+  std::int64_t secs = unix_ms / 1000, ms = unix_ms % 1000;
+  if (ms < 0) {
+    ms += 1000;
+    --secs;
+  }
+  const std::time_t t = static_cast<std::time_t>(secs);
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char buf[40];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%S", &tm);
+  char frac[8];
+  std::snprintf(frac, sizeof frac, ".%03dZ", int(ms));
+  return std::string(buf) + frac;
+}
+
+ExportSummary export_results(const std::string& db_path, const std::string& out_dir) {
+  // Everything is read and formatted in memory first: a bad input leaves no file behind.
+  const ResultsStore store(db_path, ResultsStore::Mode::read_only);
+  const auto rows = store.response_rows();
+
+  std::string csv = "study,participant,session,block,block_type,trial,stimuli,response,rt_ms,plays,timestamp\r\n";
+  for (const ResponseRow& r : rows) {
+    // Opaque id unless the study allows personal fields: codes are often names or initials.
+    const std::string participant =
+        r.export_personal ? r.participant_code : "p" + std::to_string(r.participant);
+    const std::string cells[] = {r.study,
+                                 participant,
+                                 std::to_string(r.session),
+                                 r.block_id,
+                                 r.block_type,
+                                 std::to_string(r.trial_index),
+                                 stimuli_cell(r.stimuli_json),
+                                 response_cell(r.value_json),
+                                 number_cell(r.rt_ms),
+                                 std::to_string(r.plays),
+                                 iso8601_utc(r.timestamp_ms)};
+    bool first = true;
+    for (const std::string& c : cells) {
+      if (!first) csv += ',';
+      csv += csv_field(c);
+      first = false;
+    }
+    csv += "\r\n";  // RFC 4180 line ending
+  }
+
+  std::map<std::string, std::size_t> per_study;
+  for (const ResponseRow& r : rows) ++per_study[r.study];
+  nlohmann::json studies = nlohmann::json::array();
+  for (const StudyRecord& s : store.studies())
+    studies.push_back({{"id", s.id},
+                       {"title", s.title},
+                       {"protocol_sha256", s.protocol_sha256},
+                       {"protocol_text", s.protocol_text},
+                       {"export_personal", s.export_personal},
+                       {"responses", per_study[s.id]}});
+  const nlohmann::json meta = {
+      {"source", std::filesystem::path(db_path).filename().string()},
+      {"schema_version", ResultsStore::kSchemaVersion},
+      {"studies", studies},
+      {"counts",
+       {{"studies", store.count("studies")},
+        {"participants", store.count("participants")},
+        {"sessions", store.count("sessions")},
+        {"trials", store.count("trials")},
+        {"responses", store.count("responses")},
+        {"events", store.count("events")}}},
+      {"columns", {"study", "participant", "session", "block", "block_type", "trial", "stimuli", "response", "rt_ms",
+                   "plays", "timestamp"}}};
+
+  std::error_code ec;
+  std::filesystem::create_directories(out_dir, ec);
+  if (ec) throw InputError(SourceLocation{out_dir, 0, 0}, "cannot create folder: " + ec.message());
+  ExportSummary summary;
+  summary.csv_path = (std::filesystem::path(out_dir) / "responses.csv").string();
+  summary.json_path = (std::filesystem::path(out_dir) / "study.json").string();
+  summary.responses = rows.size();
+  write_file_atomically(summary.csv_path, csv);
+  write_file_atomically(summary.json_path, meta.dump(2) + "\n");
+  return summary;
+}
+
+}  // namespace ms

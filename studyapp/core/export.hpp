@@ -1,0 +1,26 @@
+// Export of a results database to tidy data: responses.csv (one row per response, RFC 4180) and
+// study.json (study metadata and counts), both written atomically; read by `modalstudy stats`.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+namespace ms {
+
+struct ExportSummary {
+  std::string csv_path, json_path;
+  std::size_t responses = 0;
+};
+
+// Reads `db_path` (read-only; never modified) and writes out_dir/responses.csv and out_dir/study.json.
+// Throws ms::InputError naming the file for a missing file or one that is not a ModalStudy database;
+// then nothing is written. out_dir is created if missing.
+ExportSummary export_results(const std::string& db_path, const std::string& out_dir);
+
+// One CSV field, quoted per RFC 4180 when it holds a comma, quote, CR or LF.
+std::string csv_field(const std::string& value);
+
+// Unix milliseconds as ISO 8601 UTC with milliseconds, e.g. 2023-11-14T22:13:20.000Z.
+std::string iso8601_utc(std::int64_t unix_ms);
+
+}  // namespace ms

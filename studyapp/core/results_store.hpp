@@ -1,0 +1,112 @@
+// ResultsStore: one SQLite file holding a study's participants, sessions, trials, responses and
+// playback events. Every response is durable (committed, fsynced) before record_response returns.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "studyapp/core/sqlite_handle.hpp"
+
+namespace ms {
+
+struct StudyRecord {
+  std::string id;  // the protocol's `study:` id
+  std::string title;
+  std::string protocol_sha256;
+  std::string protocol_text;
+  bool export_personal = false;  // may participant codes leave the database on export?
+};
+
+// One scheduled trial, as shown to the participant.
+struct TrialRecord {
+  int block_index = 0;
+  std::string block_id;
+  std::string block_type;  // ab, mushra, identify, ...
+  int trial_index = 0;
+  std::vector<std::string> stimuli;          // stimulus names in presentation order
+  std::vector<std::string> stimulus_hashes;  // recipe hashes, same order
+};
+
+struct TrialPosition {
+  int block_index = 0;
+  int trial_index = 0;
+  friend bool operator==(const TrialPosition&, const TrialPosition&) = default;
+};
+
+struct ResponseRecord {
+  TrialPosition trial;
+  std::string value_json;  // the answer as JSON text: "metal", 73, {"ref":100,"e16":80}
+  double rt_ms = 0.0;
+  int plays = 0;
+  std::int64_t timestamp_ms = 0;  // Unix time in milliseconds
+};
+
+enum class EventKind { play, stop, switch_to };
+std::string to_string(EventKind kind);  // "play", "stop", "switch"
+
+struct PlaybackEvent {
+  TrialPosition trial;
+  EventKind kind = EventKind::play;
+  std::string stimulus;
+  std::int64_t timestamp_ms = 0;
+};
+
+// One response joined with everything needed to read it alone (the export's row).
+struct ResponseRow {
+  std::string study;
+  std::int64_t participant = 0;
+  std::string participant_code;
+  bool export_personal = false;
+  std::int64_t session = 0;
+  int block_index = 0;
+  std::string block_id, block_type;
+  int trial_index = 0;
+  std::string stimuli_json;
+  std::string value_json;
+  double rt_ms = 0.0;
+  int plays = 0;
+  std::int64_t timestamp_ms = 0;
+};
+
+class ResultsStore {
+ public:
+  static constexpr int kSchemaVersion = 1;
+  static constexpr int kApplicationId = 0x4d535444;  // "MSTD" in PRAGMA application_id
+
+  enum class Mode { create_or_open, open_existing, read_only };
+
+  // Throws ms::InputError naming `path` if the file is not a ModalStudy database or has a newer
+  // schema; such a file is never modified. open_existing/read_only also refuse a missing file.
+  explicit ResultsStore(const std::string& path, Mode mode = Mode::create_or_open);
+
+  // Adds the study, or checks an existing one with the same id has the same protocol hash.
+  void add_study(const StudyRecord& study);
+  std::int64_t add_participant(const std::string& study_id, const std::string& code, std::int64_t created_ms);
+  std::int64_t start_session(std::int64_t participant, std::int64_t started_ms, std::uint64_t schedule_seed);
+  void finish_session(std::int64_t session, std::int64_t finished_ms);
+  // The whole schedule of a session, in one transaction.
+  void record_trials(std::int64_t session, const std::vector<TrialRecord>& trials);
+
+  // Commits the response in its own transaction and returns only after COMMIT. Throws
+  // sqlite::Error if the trial already has a response (never overwrites) or was not scheduled.
+  void record_response(std::int64_t session, const ResponseRecord& response);
+  void record_event(std::int64_t session, const PlaybackEvent& event);
+
+  // The first scheduled trial (in block, trial order) without a response; nullopt when all are done.
+  std::optional<TrialPosition> first_unanswered_trial(std::int64_t session) const;
+
+  std::vector<StudyRecord> studies() const;
+  std::optional<ResponseRecord> response(std::int64_t session, TrialPosition trial) const;
+  std::vector<ResponseRow> response_rows() const;  // ordered by session, block, trial
+  std::int64_t count(const std::string& table) const;  // rows in one of the store's tables
+  std::string integrity_check() const;                  // "ok" when PRAGMA integrity_check passes
+  const std::string& path() const { return db_.path(); }
+
+ private:
+  bool created_;  // this object created the file (and so may write the schema into it)
+  sqlite::Database db_;
+  std::optional<sqlite::Statement> insert_response_, insert_event_;
+};
+
+}  // namespace ms
