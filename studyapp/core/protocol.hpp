@@ -74,6 +74,7 @@ struct RatingBlock {
 struct Slider {
   std::string key;  // dotted parameter-set key, e.g. damping.alpha1
   double min = 0.0, max = 1.0;
+  SourceLocation where;
 };
 // `paramset` names a stimulus whose source is a parameter set; sliders override its keys live.
 struct AdjustBlock {
@@ -84,6 +85,7 @@ struct AdjustBlock {
 struct StaircaseBlock {
   StimulusRef stimulus;
   std::string parameter;    // dotted parameter-set key, e.g. prune.threshold_db
+  SourceLocation parameter_where;
   double start = 0.0, step = -1.0;
   int down = 2, up = 1;
   int reversals = 8;

@@ -190,7 +190,7 @@ BlockBody parse_body(const YamlReader& r, const YAML::Node& n, const std::string
         const std::string sp = idx(p + ".sliders", i);
         r.check_keys(sl[i], sp, {"key", "min", "max"});
         Slider s{r.text(sl[i]["key"], sp + ".key"), r.number(sl[i]["min"], sp + ".min"),
-                 r.number(sl[i]["max"], sp + ".max")};
+                 r.number(sl[i]["max"], sp + ".max"), r.where(sl[i]["key"], sp + ".key")};
         if (!(s.min < s.max)) r.fail(sl[i]["max"], sp + ".max", "must be greater than min");
         ad.sliders.push_back(s);
       }
@@ -202,6 +202,7 @@ BlockBody parse_body(const YamlReader& r, const YAML::Node& n, const std::string
       StaircaseBlock s;
       s.stimulus = ref(r, req("stimulus"), p + ".stimulus");
       s.parameter = r.text(req("parameter"), p + ".parameter");
+      s.parameter_where = r.where(n["parameter"], p + ".parameter");
       s.start = r.number(req("start"), p + ".start");
       s.step = r.number(req("step"), p + ".step");
       if (s.step == 0.0) r.fail(n["step"], p + ".step", "must not be 0");

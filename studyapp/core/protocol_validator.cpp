@@ -65,6 +65,22 @@ std::vector<std::string> validate_protocol(const Protocol& p, const ValidateOpti
       if (fs::is_directory(cand)) roots.push_back(canonical_or_self(cand));
   }
   const bool allow_outside = options.allow_outside || p.allow_outside;
+  std::map<std::string, fs::path> loaded;  // parameter-set stimuli that load cleanly
+
+  // Sliders and staircases set a parameter-set key live: it must load at the values they reach.
+  auto check_setting = [&](const StimulusRef& stim, const std::string& key, double value,
+                           const SourceLocation& where, const std::string& who) {
+    const auto it = loaded.find(stim.name);
+    if (it == loaded.end()) return;
+    auto overrides = p.find_stimulus(stim.name)->overrides;
+    overrides.push_back(key + "=" + std::to_string(value));
+    try {
+      (void)load_paramset(it->second.string(), overrides);
+    } catch (const InputError& e) {
+      problems.push_back(at(where, who + "'" + key + "' = " + std::to_string(value) + " on stimulus '" +
+                                       stim.name + "': " + e.problem()));
+    }
+  };
 
   for (const auto& s : p.stimuli) {
     if (s.kind == StimulusKind::derived) {
@@ -100,6 +116,7 @@ std::vector<std::string> validate_protocol(const Protocol& p, const ValidateOpti
     if (s.kind == StimulusKind::paramset && options.load_paramsets) {
       try {
         (void)load_paramset(resolved.string(), s.overrides);
+        loaded[s.name] = resolved;
       } catch (const InputError& e) {
         // Problems in overrides point at the stimulus in the protocol; others at the set's own file.
         if (e.where().file.rfind("--set ", 0) == 0)
@@ -149,11 +166,14 @@ std::vector<std::string> validate_protocol(const Protocol& p, const ValidateOpti
       const auto* s = p.find_stimulus(a->paramset.name);
       if (s && s->kind != StimulusKind::paramset)
         problems.push_back(at(a->paramset.where, who + "stimulus '" + s->name + "' is not a parameter set"));
+      for (const auto& sl : a->sliders)
+        for (double v : {sl.min, sl.max}) check_setting(a->paramset, sl.key, v, sl.where, who);
     }
     if (const auto* s = std::get_if<StaircaseBlock>(&b.body)) {
       const auto* st = p.find_stimulus(s->stimulus.name);
       if (st && st->kind != StimulusKind::paramset)
         problems.push_back(at(s->stimulus.where, who + "stimulus '" + st->name + "' is not a parameter set"));
+      check_setting(s->stimulus, s->parameter, s->start, s->parameter_where, who);
     }
     if (const auto* q = std::get_if<QuestionnaireBlock>(&b.body); q && q->questions.empty()) empty("no questions");
   }

@@ -228,3 +228,14 @@ TEST(Schedule, FisherYatesIsAPermutationAndSeeded) {
   EXPECT_EQ(w, v);
   EXPECT_EQ(ms::latin_square_row("P07", 4), 3u);
 }
+
+TEST(Protocol, SliderKeysMustLoadOnTheirParameterSet) {
+  TempDir dir;
+  const std::string text = "study: t\nstimuli:\n  s: {paramset: " + std::string(MODALSTUDY_SOURCE_DIR) +
+                           "/stimuli/bar/sterling-steel.yaml}\nblocks:\n  - type: adjust\n    paramset: s\n"
+                           "    sliders:\n      - {key: duration_z, min: 0.1, max: 2}\n";
+  const auto p = check(dir, text, true);
+  ASSERT_EQ(p.size(), 2u) << all(p);  // min and max
+  EXPECT_TRUE(has(p, dir.file("p.yaml") + ":8:15: block 'adjust-1': 'duration_z' = 0.100000 on stimulus 's': "
+                                          "unknown key 'duration_z' (did you mean 'duration_s'?)")) << all(p);
+}
