@@ -3,6 +3,7 @@
 // Validates a study protocol (every problem, one line each, exit 2) or prints a participant's trials.
 #include <nlohmann/json.hpp>
 
+#include <cstdlib>
 #include <iostream>
 
 #include "studyapp/cli/commands.hpp"
