@@ -14,5 +14,6 @@ void register_prune(CLI::App& app);
 void register_stats(CLI::App& app);
 void register_plot(CLI::App& app);
 void register_export(CLI::App& app);
+void register_protocol(CLI::App& app);
 
 }  // namespace ms::cli

@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   ms::cli::register_stats(app);
   ms::cli::register_plot(app);
   ms::cli::register_export(app);
+  ms::cli::register_protocol(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

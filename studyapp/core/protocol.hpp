@@ -1,0 +1,139 @@
+// Protocol model: a listening study as read from protocols/*.yaml (DESIGN.md §4) — named stimuli
+// (parameter set + overrides, derived anchor, recording) and an ordered list of typed blocks.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "synthesis/input_error.hpp"
+
+namespace ms {
+
+// A stimulus name as written in a block, with where it was written (for "did you mean").
+struct StimulusRef {
+  std::string name;
+  SourceLocation where;
+};
+using StimulusPair = std::array<StimulusRef, 2>;
+
+enum class StimulusKind { paramset, derived, file };
+
+struct StimulusSource {
+  std::string name;
+  StimulusKind kind = StimulusKind::paramset;
+  SourceLocation where;               // the name key
+  std::string path;                   // paramset or file path as written (relative to the protocol)
+  SourceLocation path_where;
+  std::vector<std::string> overrides; // "key=value" from `set:` and `prune:` (prune.key=value)
+  StimulusRef derive_from;            // kind == derived
+  double lowpass_hz = 0.0;
+  bool implicit = false;              // created by `anchors: auto`, not written by the author
+};
+
+enum class BlockType { instructions, ab, mushra, magnitude, identify, rating, adjust, staircase,
+                       questionnaire, unknown };
+const std::vector<std::string>& block_type_names();  // in enum order, without "unknown"
+std::string to_string(BlockType t);
+
+enum class AbMode { same_different, preference, abx, two_afc, bipolar };
+std::string to_string(AbMode m);
+
+struct InstructionsBlock { std::string text; };
+struct AbBlock {
+  AbMode mode = AbMode::same_different;
+  std::vector<StimulusPair> pairs;
+};
+struct MushraBlock {
+  std::optional<StimulusRef> reference;
+  std::vector<StimulusRef> conditions;
+  bool auto_anchors = false;
+  std::vector<StimulusRef> anchors;  // with auto: the implicit derived stimuli (3.5 and 7 kHz)
+};
+struct MagnitudeBlock {
+  std::optional<StimulusPair> modulus;
+  bool all_pairs = false;            // every unordered pair of `stimuli`
+  std::vector<StimulusPair> pairs;
+  std::vector<StimulusRef> stimuli;
+};
+struct IdentifyBlock {
+  std::vector<StimulusRef> stimuli;
+  std::vector<std::string> labels;
+};
+struct RatingAttribute {
+  std::string name;
+  int points = 7;
+  std::string low, high;
+};
+struct RatingBlock {
+  std::vector<StimulusRef> stimuli;
+  std::vector<RatingAttribute> attributes;
+};
+struct Slider {
+  std::string key;  // dotted parameter-set key, e.g. damping.alpha1
+  double min = 0.0, max = 1.0;
+  SourceLocation where;
+};
+// `paramset` names a stimulus whose source is a parameter set; sliders override its keys live.
+struct AdjustBlock {
+  StimulusRef paramset;
+  std::vector<Slider> sliders;
+};
+// Transformed up-down staircase (Levitt 1971). Default 2-down-1-up: converges on 70.7 % correct.
+struct StaircaseBlock {
+  StimulusRef stimulus;
+  std::string parameter;    // dotted parameter-set key, e.g. prune.threshold_db
+  SourceLocation parameter_where;
+  double start = 0.0, step = -1.0;
+  int down = 2, up = 1;
+  int reversals = 8;
+};
+struct Question {
+  std::string id, text;
+  std::vector<std::string> options;  // empty: free text
+};
+struct QuestionnaireBlock { std::vector<Question> questions; };
+
+using BlockBody = std::variant<std::monostate, InstructionsBlock, AbBlock, MushraBlock, MagnitudeBlock,
+                               IdentifyBlock, RatingBlock, AdjustBlock, StaircaseBlock, QuestionnaireBlock>;
+
+struct Block {
+  BlockType type = BlockType::unknown;
+  std::string type_name;       // as written (kept for unknown types)
+  SourceLocation where;        // the block map
+  SourceLocation type_where;
+  std::string id;              // written, or "<type>-<n>" (1-based position) when absent
+  bool id_written = false;
+  SourceLocation id_where;
+  bool randomize = true;
+  bool training = false;
+  int break_after = 0;         // trials between breaks; 0 = none
+  int repeats = 1;
+  BlockBody body;
+
+  // Every stimulus the block names (for validation and scheduling).
+  std::vector<StimulusRef> referenced() const;
+};
+
+enum class Counterbalance { none, latin_square };
+
+struct Protocol {
+  std::string file;            // as given (used in messages)
+  std::string base_dir;        // folder the relative paths are resolved against
+  std::string study, title;
+  double sample_rate_hz = 44100;
+  std::uint64_t seed = 0;
+  Counterbalance counterbalance = Counterbalance::none;
+  bool allow_outside = false;
+  std::vector<StimulusSource> stimuli;  // in file order, implicit anchors appended
+  std::vector<Block> blocks;
+
+  const StimulusSource* find_stimulus(const std::string& name) const;
+};
+
+// Name of the implicit low-pass anchor of `reference` at `hz` ("full~lp3500").
+std::string anchor_name(const std::string& reference, double hz);
+
+}  // namespace ms

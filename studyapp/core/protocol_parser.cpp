@@ -1,0 +1,345 @@
+// Protocol YAML → Protocol (see protocol_parser.hpp). Semantic checks live in protocol_validator.
+#include "studyapp/core/protocol_parser.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "synthesis/yaml_reader.hpp"
+
+namespace ms {
+
+namespace {
+
+std::string idx(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
+
+bool flag(const YamlReader& r, const YAML::Node& n, const std::string& path) {
+  const std::string t = r.text(n, path);
+  if (t == "true" || t == "yes" || t == "on") return true;
+  if (t == "false" || t == "no" || t == "off") return false;
+  r.fail(n, path, "expected true or false, got '" + t + "'");
+}
+
+int count(const YamlReader& r, const YAML::Node& n, const std::string& path, long long lo, long long hi) {
+  const long long v = r.integer(n, path);
+  if (v < lo || v > hi)
+    r.fail(n, path, "must be between " + std::to_string(lo) + " and " + std::to_string(hi) + ", got " + n.Scalar());
+  return static_cast<int>(v);
+}
+
+StimulusRef ref(const YamlReader& r, const YAML::Node& n, const std::string& path) {
+  return StimulusRef{r.text(n, path), r.where(n, path)};
+}
+
+std::vector<StimulusRef> refs(const YamlReader& r, const YAML::Node& n, const std::string& path) {
+  if (!n) return {};
+  if (!n.IsSequence()) r.fail(n, path, "expected a list of stimulus names");
+  std::vector<StimulusRef> out;
+  for (std::size_t i = 0; i < n.size(); ++i) out.push_back(ref(r, n[i], idx(path, i)));
+  return out;
+}
+
+StimulusPair pair(const YamlReader& r, const YAML::Node& n, const std::string& path) {
+  if (!n.IsSequence() || n.size() != 2) r.fail(n, path, "expected a pair [a, b] of stimulus names");
+  return {ref(r, n[0], idx(path, 0)), ref(r, n[1], idx(path, 1))};
+}
+
+std::vector<StimulusPair> pairs(const YamlReader& r, const YAML::Node& n, const std::string& path) {
+  if (!n) return {};
+  if (!n.IsSequence()) r.fail(n, path, "expected a list of pairs [[a, b], ...]");
+  std::vector<StimulusPair> out;
+  for (std::size_t i = 0; i < n.size(); ++i) out.push_back(pair(r, n[i], idx(path, i)));
+  return out;
+}
+
+std::vector<std::string> texts(const YamlReader& r, const YAML::Node& n, const std::string& path) {
+  if (!n) return {};
+  if (!n.IsSequence()) r.fail(n, path, "expected a list of text");
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < n.size(); ++i) out.push_back(r.text(n[i], idx(path, i)));
+  return out;
+}
+
+// Flattens a YAML map into "a.b=value" overrides (values re-emitted as flow YAML).
+void flatten(const YamlReader& r, const YAML::Node& n, const std::string& prefix, const std::string& path,
+             std::vector<std::string>& out) {
+  if (!n.IsMap()) r.fail(n, path, "expected a map of parameter-set keys");
+  for (auto it = n.begin(); it != n.end(); ++it) {
+    const std::string key = prefix.empty() ? it->first.Scalar() : prefix + "." + it->first.Scalar();
+    if (it->second.IsMap()) {
+      flatten(r, it->second, key, path + "." + it->first.Scalar(), out);
+    } else {
+      YAML::Emitter e;
+      e << YAML::Flow << it->second;
+      out.push_back(key + "=" + e.c_str());
+    }
+  }
+}
+
+StimulusSource parse_stimulus(const YamlReader& r, const YAML::Node& key, const YAML::Node& n) {
+  StimulusSource s;
+  s.name = r.text(key, "stimuli");
+  const std::string path = "stimuli." + s.name;
+  s.where = r.where(key, path);
+  if (!n.IsMap()) r.fail(n, path, "expected {paramset: ...}, {derive: ...} or {file: ...}");
+  const int kinds = int(bool(n["paramset"])) + int(bool(n["derive"])) + int(bool(n["file"]));
+  if (kinds != 1) r.fail(n, path, "needs exactly one of 'paramset', 'derive' or 'file'");
+  if (n["paramset"]) {
+    r.check_keys(n, path, {"paramset", "set", "prune"});
+    s.kind = StimulusKind::paramset;
+    s.path = r.text(n["paramset"], path + ".paramset");
+    s.path_where = r.where(n["paramset"], path + ".paramset");
+    if (n["set"]) flatten(r, n["set"], "", path + ".set", s.overrides);
+    if (n["prune"]) flatten(r, n["prune"], "prune", path + ".prune", s.overrides);
+  } else if (n["derive"]) {
+    r.check_keys(n, path, {"derive", "lowpass_hz"});
+    s.kind = StimulusKind::derived;
+    s.derive_from = ref(r, n["derive"], path + ".derive");
+    if (!n["lowpass_hz"]) r.fail(n, path, "a derived stimulus needs 'lowpass_hz'");
+    s.lowpass_hz = r.positive(n["lowpass_hz"], path + ".lowpass_hz");
+  } else {
+    r.check_keys(n, path, {"file"});
+    s.kind = StimulusKind::file;
+    s.path = r.text(n["file"], path + ".file");
+    s.path_where = r.where(n["file"], path + ".file");
+  }
+  return s;
+}
+
+BlockBody parse_body(const YamlReader& r, const YAML::Node& n, const std::string& p, Block& b) {
+  auto req = [&](const char* key) {
+    if (!n[key]) r.fail(n, p, std::string("a '") + b.type_name + "' block needs '" + key + "'");
+    return n[key];
+  };
+  switch (b.type) {
+    case BlockType::instructions: {
+      r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "text"});
+      return InstructionsBlock{r.text(req("text"), p + ".text")};
+    }
+    case BlockType::ab: {
+      r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "mode", "pairs"});
+      AbBlock ab;
+      if (n["mode"]) {
+        const std::string m = r.text(n["mode"], p + ".mode");
+        static const std::vector<std::string> modes{"same_different", "preference", "abx", "2afc", "bipolar"};
+        const auto it = std::find(modes.begin(), modes.end(), m);
+        if (it == modes.end()) {
+          const std::string near = nearest_key(m, modes);
+          r.fail(n["mode"], p + ".mode", "unknown mode '" + m + "'" +
+                                             (near.empty() ? "" : " (did you mean '" + near + "'?)"));
+        }
+        ab.mode = static_cast<AbMode>(it - modes.begin());
+      }
+      ab.pairs = pairs(r, n["pairs"], p + ".pairs");
+      return ab;
+    }
+    case BlockType::mushra: {
+      r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "reference",
+                          "conditions", "anchors"});
+      MushraBlock m;
+      if (n["reference"]) m.reference = ref(r, n["reference"], p + ".reference");
+      m.conditions = refs(r, n["conditions"], p + ".conditions");
+      const YAML::Node a = n["anchors"];
+      if (!a || (a.IsScalar() && a.Scalar() == "auto")) m.auto_anchors = true;  // BS.1534 default
+      else if (a.IsScalar() && a.Scalar() == "none") m.auto_anchors = false;
+      else m.anchors = refs(r, a, p + ".anchors");
+      return m;
+    }
+    case BlockType::magnitude: {
+      r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "modulus", "pairs",
+                          "stimuli"});
+      MagnitudeBlock g;
+      g.modulus = pair(r, req("modulus"), p + ".modulus");
+      g.stimuli = refs(r, n["stimuli"], p + ".stimuli");
+      const YAML::Node pr = n["pairs"];
+      if (!pr || (pr.IsScalar() && pr.Scalar() == "all")) g.all_pairs = true;
+      else g.pairs = pairs(r, pr, p + ".pairs");
+      return g;
+    }
+    case BlockType::identify: {
+      r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "stimuli", "labels"});
+      return IdentifyBlock{refs(r, n["stimuli"], p + ".stimuli"), texts(r, n["labels"], p + ".labels")};
+    }
+    case BlockType::rating: {
+      r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "stimuli",
+                          "attributes"});
+      RatingBlock rb;
+      rb.stimuli = refs(r, n["stimuli"], p + ".stimuli");
+      const YAML::Node at = req("attributes");
+      if (!at.IsSequence()) r.fail(at, p + ".attributes", "expected a list of {name, points, low, high}");
+      for (std::size_t i = 0; i < at.size(); ++i) {
+        const std::string ap = idx(p + ".attributes", i);
+        r.check_keys(at[i], ap, {"name", "points", "low", "high"});
+        RatingAttribute a;
+        a.name = r.text(at[i]["name"], ap + ".name");
+        if (at[i]["points"]) a.points = count(r, at[i]["points"], ap + ".points", 2, 101);
+        if (at[i]["low"]) a.low = r.text(at[i]["low"], ap + ".low");
+        if (at[i]["high"]) a.high = r.text(at[i]["high"], ap + ".high");
+        rb.attributes.push_back(a);
+      }
+      return rb;
+    }
+    case BlockType::adjust: {
+      r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "paramset", "sliders"});
+      AdjustBlock ad;
+      ad.paramset = ref(r, req("paramset"), p + ".paramset");
+      const YAML::Node sl = n["sliders"];
+      if (sl && !sl.IsSequence()) r.fail(sl, p + ".sliders", "expected a list of {key, min, max}");
+      for (std::size_t i = 0; sl && i < sl.size(); ++i) {
+        const std::string sp = idx(p + ".sliders", i);
+        r.check_keys(sl[i], sp, {"key", "min", "max"});
+        Slider s{r.text(sl[i]["key"], sp + ".key"), r.number(sl[i]["min"], sp + ".min"),
+                 r.number(sl[i]["max"], sp + ".max"), r.where(sl[i]["key"], sp + ".key")};
+        if (!(s.min < s.max)) r.fail(sl[i]["max"], sp + ".max", "must be greater than min");
+        ad.sliders.push_back(s);
+      }
+      return ad;
+    }
+    case BlockType::staircase: {
+      r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "stimulus",
+                          "parameter", "start", "step", "down_up", "reversals"});
+      StaircaseBlock s;
+      s.stimulus = ref(r, req("stimulus"), p + ".stimulus");
+      s.parameter = r.text(req("parameter"), p + ".parameter");
+      s.parameter_where = r.where(n["parameter"], p + ".parameter");
+      s.start = r.number(req("start"), p + ".start");
+      s.step = r.number(req("step"), p + ".step");
+      if (s.step == 0.0) r.fail(n["step"], p + ".step", "must not be 0");
+      if (const YAML::Node du = n["down_up"]) {
+        if (!du.IsSequence() || du.size() != 2) r.fail(du, p + ".down_up", "expected [down, up], e.g. [2, 1]");
+        s.down = count(r, du[0], p + ".down_up[0]", 1, 10);
+        s.up = count(r, du[1], p + ".down_up[1]", 1, 10);
+      }
+      if (n["reversals"]) s.reversals = count(r, n["reversals"], p + ".reversals", 1, 100);
+      return s;
+    }
+    case BlockType::questionnaire: {
+      r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "questions"});
+      QuestionnaireBlock q;
+      const YAML::Node qs = n["questions"];
+      if (qs && !qs.IsSequence()) r.fail(qs, p + ".questions", "expected a list of questions");
+      for (std::size_t i = 0; qs && i < qs.size(); ++i) {
+        const std::string qp = idx(p + ".questions", i);
+        Question question;
+        question.id = "q" + std::to_string(i + 1);
+        if (qs[i].IsScalar()) {
+          question.text = r.text(qs[i], qp);
+        } else {
+          r.check_keys(qs[i], qp, {"id", "text", "options"});
+          if (qs[i]["id"]) question.id = r.text(qs[i]["id"], qp + ".id");
+          question.text = r.text(qs[i]["text"], qp + ".text");
+          question.options = texts(r, qs[i]["options"], qp + ".options");
+        }
+        q.questions.push_back(question);
+      }
+      return q;
+    }
+    case BlockType::unknown: break;
+  }
+  return std::monostate{};
+}
+
+Block parse_block(const YamlReader& r, const YAML::Node& n, std::size_t index) {
+  const std::string p = idx("blocks", index);
+  if (!n.IsMap()) r.fail(n, p, "expected a block map {type: ..., ...}");
+  Block b;
+  b.where = r.where(n, p);
+  if (!n["type"]) r.fail(n, p, "a block needs a 'type'");
+  b.type_name = r.text(n["type"], p + ".type");
+  b.type_where = r.where(n["type"], p + ".type");
+  const auto& names = block_type_names();
+  const auto it = std::find(names.begin(), names.end(), b.type_name);
+  b.type = it == names.end() ? BlockType::unknown : static_cast<BlockType>(it - names.begin());
+  b.id = (b.type == BlockType::unknown ? std::string("block") : b.type_name) + "-" + std::to_string(index + 1);
+  if (n["id"]) {
+    b.id = r.text(n["id"], p + ".id");
+    b.id_written = true;
+    b.id_where = r.where(n["id"], p + ".id");
+  }
+  if (n["randomize"]) b.randomize = flag(r, n["randomize"], p + ".randomize");
+  if (n["training"]) b.training = flag(r, n["training"], p + ".training");
+  if (n["break_after"]) b.break_after = count(r, n["break_after"], p + ".break_after", 0, 100000);
+  if (n["repeats"]) b.repeats = count(r, n["repeats"], p + ".repeats", 1, 1000);
+  if (b.type != BlockType::unknown) b.body = parse_body(r, n, p, b);
+  return b;
+}
+
+}  // namespace
+
+Protocol parse_protocol(const std::string& yaml_text, const std::string& file_for_errors,
+                        const std::string& base_dir, std::vector<std::string>* problems) {
+  const YamlReader r(file_for_errors);
+  const YAML::Node root = r.load(yaml_text);
+  Protocol pr;
+  pr.file = file_for_errors;
+  pr.base_dir = base_dir;
+  if (!root.IsMap()) r.fail(root, "", "a protocol is a map with study, title, stimuli and blocks");
+  r.check_keys(root, "", {"study", "title", "sample_rate", "seed", "counterbalance", "allow_outside",
+                          "stimuli", "blocks"});
+  if (!root["study"]) r.fail(root, "", "missing 'study' (the study id)");
+  pr.study = r.text(root["study"], "study");
+  if (root["title"]) pr.title = r.text(root["title"], "title");
+  if (root["sample_rate"]) pr.sample_rate_hz = r.positive(root["sample_rate"], "sample_rate");
+  if (root["seed"]) {
+    const long long s = r.integer(root["seed"], "seed");
+    if (s < 0) r.fail(root["seed"], "seed", "must not be negative");
+    pr.seed = static_cast<std::uint64_t>(s);
+  }
+  if (root["counterbalance"]) {
+    const std::string c = r.text(root["counterbalance"], "counterbalance");
+    if (c == "latin_square") pr.counterbalance = Counterbalance::latin_square;
+    else if (c != "none") r.fail(root["counterbalance"], "counterbalance", "expected none or latin_square, got '" + c + "'");
+  }
+  if (root["allow_outside"]) pr.allow_outside = flag(r, root["allow_outside"], "allow_outside");
+
+  // A bad stimulus or block is collected (with `problems`) so one run reports all of them.
+  auto guarded = [&](auto&& fn) {
+    if (!problems) return fn();
+    try {
+      fn();
+    } catch (const InputError& e) {
+      problems->push_back(e.what());
+    }
+  };
+  const YAML::Node st = root["stimuli"];
+  if (st && !st.IsMap()) r.fail(st, "stimuli", "expected a map name -> source");
+  for (auto it = st.begin(); st && it != st.end(); ++it)
+    guarded([&] { pr.stimuli.push_back(parse_stimulus(r, it->first, it->second)); });
+  const YAML::Node bl = root["blocks"];
+  if (bl && !bl.IsSequence()) r.fail(bl, "blocks", "expected a list of blocks");
+  for (std::size_t i = 0; bl && i < bl.size(); ++i)
+    guarded([&] { pr.blocks.push_back(parse_block(r, bl[i], i)); });
+
+  // `anchors: auto`: the BS.1534 3.5 kHz and 7 kHz low-passed references, as implicit stimuli.
+  for (auto& b : pr.blocks) {
+    auto* m = std::get_if<MushraBlock>(&b.body);
+    if (!m || !m->auto_anchors || !m->reference) continue;
+    for (double hz : {3500.0, 7000.0}) {
+      const std::string name = anchor_name(m->reference->name, hz);
+      m->anchors.push_back(StimulusRef{name, m->reference->where});
+      if (pr.find_stimulus(name)) continue;
+      StimulusSource s;
+      s.name = name;
+      s.kind = StimulusKind::derived;
+      s.where = m->reference->where;
+      s.derive_from = *m->reference;
+      s.lowpass_hz = hz;
+      s.implicit = true;
+      pr.stimuli.push_back(s);
+    }
+  }
+  return pr;
+}
+
+Protocol load_protocol(const std::string& path, std::vector<std::string>* problems) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(SourceLocation{path, 0, 0}, "cannot open protocol file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  std::string base = std::filesystem::path(path).parent_path().string();
+  if (base.empty()) base = ".";
+  return parse_protocol(ss.str(), path, base, problems);
+}
+
+}  // namespace ms

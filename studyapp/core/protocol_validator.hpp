@@ -1,0 +1,29 @@
+// Semantic checks of a parsed protocol that report EVERY problem (one line each, file:line:column):
+// unknown block types, missing or cyclic stimuli, paths escaping the allowed folders, missing files,
+// duplicate ids, empty blocks, MUSHRA without reference, identify without labels.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "studyapp/core/protocol.hpp"
+
+namespace ms {
+
+struct ValidateOptions {
+  bool allow_outside = false;      // also set by the protocol's top-level `allow_outside: true`
+  std::string stimuli_dir;         // project stimuli/ folder; "" = <protocol dir>/stimuli or ../stimuli
+  bool load_paramsets = true;      // load each named parameter set (surfacing its own errors)
+};
+
+std::vector<std::string> validate_protocol(const Protocol& p, const ValidateOptions& options = {});
+
+// Parse (collecting per-item problems) and validate a protocol file. `protocol` is empty only when
+// the file could not be read or parsed at all (the reason is then the only problem).
+struct ProtocolCheck {
+  std::optional<Protocol> protocol;
+  std::vector<std::string> problems;
+};
+ProtocolCheck check_protocol_file(const std::string& path, const ValidateOptions& options = {});
+
+}  // namespace ms

@@ -1,0 +1,153 @@
+// Trial scheduling (see schedule.hpp).
+#include "studyapp/core/schedule.hpp"
+
+#include <algorithm>
+#include <cctype>
+
+namespace ms {
+
+std::uint64_t participant_seed(std::uint64_t protocol_seed, const std::string& participant) {
+  std::uint64_t h = 1469598103934665603ull;  // FNV-1a 64
+  for (unsigned char c : participant) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  std::uint64_t z = protocol_seed ^ (h + 0x9e3779b97f4a7c15ull + (protocol_seed << 6) + (protocol_seed >> 2));
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;  // splitmix64 finaliser
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  return z ^ (z >> 31);
+}
+
+std::uint64_t uniform_below(std::mt19937_64& engine, std::uint64_t n) {
+  if (n <= 1) return 0;
+  const std::uint64_t limit = ~std::uint64_t{0} - (~std::uint64_t{0} % n);  // reject the biased tail
+  std::uint64_t x = engine();
+  while (x >= limit) x = engine();
+  return x % n;
+}
+
+std::vector<std::vector<std::size_t>> latin_square(std::size_t n) {
+  std::vector<std::size_t> first;  // 0, 1, n-1, 2, n-2, ...
+  for (std::size_t k = 0, lo = 1, hi = n; k < n; ++k) first.push_back(k == 0 ? 0 : (k % 2 == 1 ? lo++ : --hi));
+  std::vector<std::vector<std::size_t>> rows(n, std::vector<std::size_t>(n));
+  for (std::size_t r = 0; r < n; ++r)
+    for (std::size_t c = 0; c < n; ++c) rows[r][c] = (first[c] + r) % n;
+  return rows;
+}
+
+std::size_t latin_square_row(const std::string& participant, std::size_t n) {
+  if (n == 0) return 0;
+  std::size_t end = participant.size(), start = end;
+  while (start > 0 && std::isdigit(static_cast<unsigned char>(participant[start - 1]))) --start;
+  if (start < end && end - start <= 18) return std::stoull(participant.substr(start)) % n;
+  return static_cast<std::size_t>(participant_seed(0, participant) % n);
+}
+
+namespace {
+
+void add_pair_trials(std::vector<Trial>& out, const Trial& proto, const std::vector<StimulusPair>& pairs,
+                     int repeats, bool randomize, bool abx, std::mt19937_64& rng) {
+  for (int rep = 0; rep < repeats; ++rep)
+    for (const auto& pr : pairs) {
+      Trial t = proto;
+      t.repeat = static_cast<std::size_t>(rep);
+      t.stimuli = {pr[0].name, pr[1].name};
+      if (randomize && uniform_below(rng, 2) == 1) {
+        std::swap(t.stimuli[0], t.stimuli[1]);
+        t.swapped = true;
+      }
+      if (abx) t.stimuli.push_back(t.stimuli[uniform_below(rng, 2)]);  // X is A or B
+      out.push_back(t);
+    }
+}
+
+void add_single_trials(std::vector<Trial>& out, const Trial& proto, const std::vector<StimulusRef>& stimuli,
+                       int repeats) {
+  for (int rep = 0; rep < repeats; ++rep)
+    for (const auto& s : stimuli) {
+      Trial t = proto;
+      t.repeat = static_cast<std::size_t>(rep);
+      t.stimuli = {s.name};
+      out.push_back(t);
+    }
+}
+
+std::vector<Trial> block_trials(const Block& b, std::size_t block_index, std::mt19937_64& rng) {
+  Trial proto;
+  proto.block = block_index;
+  proto.block_id = b.id;
+  proto.type = b.type;
+  proto.training = b.training;
+  std::vector<Trial> out;
+  if (const auto* ab = std::get_if<AbBlock>(&b.body)) {
+    add_pair_trials(out, proto, ab->pairs, b.repeats, b.randomize, ab->mode == AbMode::abx, rng);
+  } else if (const auto* m = std::get_if<MushraBlock>(&b.body)) {
+    for (int rep = 0; rep < b.repeats; ++rep) {
+      Trial t = proto;
+      t.repeat = static_cast<std::size_t>(rep);
+      if (m->reference) {
+        t.reference = m->reference->name;
+        t.stimuli.push_back(m->reference->name);  // the hidden reference
+      }
+      for (const auto& c : m->conditions) t.stimuli.push_back(c.name);
+      for (const auto& a : m->anchors) t.stimuli.push_back(a.name);
+      if (b.randomize) fisher_yates(t.stimuli, rng);
+      out.push_back(t);
+    }
+  } else if (const auto* g = std::get_if<MagnitudeBlock>(&b.body)) {
+    std::vector<StimulusPair> pairs = g->pairs;
+    if (g->all_pairs)
+      for (std::size_t i = 0; i < g->stimuli.size(); ++i)
+        for (std::size_t j = i + 1; j < g->stimuli.size(); ++j) pairs.push_back({g->stimuli[i], g->stimuli[j]});
+    add_pair_trials(out, proto, pairs, b.repeats, b.randomize, false, rng);
+  } else if (const auto* i = std::get_if<IdentifyBlock>(&b.body)) {
+    add_single_trials(out, proto, i->stimuli, b.repeats);
+  } else if (const auto* r = std::get_if<RatingBlock>(&b.body)) {
+    add_single_trials(out, proto, r->stimuli, b.repeats);
+  } else if (const auto* a = std::get_if<AdjustBlock>(&b.body)) {
+    add_single_trials(out, proto, {a->paramset}, b.repeats);
+  } else if (const auto* s = std::get_if<StaircaseBlock>(&b.body)) {
+    add_single_trials(out, proto, {s->stimulus}, b.repeats);  // the track itself adapts at run time
+  } else {
+    out.push_back(proto);  // instructions, questionnaire: one screen
+  }
+  // MUSHRA shuffles within the screen; other blocks shuffle the trial order.
+  if (b.randomize && b.type != BlockType::mushra) fisher_yates(out, rng);
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    out[k].index = k;
+    out[k].break_after = b.break_after > 0 && (k + 1) % static_cast<std::size_t>(b.break_after) == 0 &&
+                         k + 1 < out.size();
+  }
+  return out;
+}
+
+}  // namespace
+
+Schedule make_schedule(const Protocol& p, const std::string& participant) {
+  Schedule s;
+  s.participant = participant;
+  s.seed = participant_seed(p.seed, participant);
+  std::mt19937_64 rng(s.seed);
+  for (std::size_t i = 0; i < p.blocks.size(); ++i) s.block_order.push_back(i);
+  if (p.counterbalance == Counterbalance::latin_square) {
+    std::vector<std::size_t> slots;  // positions of the test blocks
+    for (std::size_t i = 0; i < p.blocks.size(); ++i) {
+      const auto& b = p.blocks[i];
+      if (!b.training && b.type != BlockType::instructions && b.type != BlockType::questionnaire)
+        slots.push_back(i);
+    }
+    if (slots.size() > 1) {
+      const auto square = latin_square(slots.size());
+      const auto& row = square[latin_square_row(participant, slots.size())];
+      for (std::size_t k = 0; k < slots.size(); ++k) s.block_order[slots[k]] = slots[row[k]];
+    }
+  }
+  for (std::size_t bi : s.block_order) {
+    if (p.blocks[bi].type == BlockType::unknown) continue;
+    auto t = block_trials(p.blocks[bi], bi, rng);
+    s.trials.insert(s.trials.end(), t.begin(), t.end());
+  }
+  return s;
+}
+
+}  // namespace ms

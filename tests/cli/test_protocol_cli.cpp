@@ -1,0 +1,49 @@
+// modalstudy protocol check / schedule: every problem printed, exit codes, JSON shape.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "support/test_util.hpp"
+
+using ms::test::run_cli;
+using ms::test::TempDir;
+
+namespace {
+const std::string kDemo = std::string(MODALSTUDY_SOURCE_DIR) + "/protocols/demo.yaml";
+}
+
+TEST(ProtocolCli, DemoChecksClean) {
+  TempDir dir;
+  const auto r = run_cli("protocol check " + kDemo + " --json", dir);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["problems"].empty());
+  EXPECT_EQ(j["blocks"], 10);
+}
+
+TEST(ProtocolCli, EveryProblemOnItsOwnLineAndExit2) {
+  TempDir dir;
+  dir.write("a.wav", "x");
+  const std::string p = dir.write("p.yaml",
+                                  "study: t\nstimuli:\n  a: {file: a.wav}\nblocks:\n"
+                                  "  - {type: ab, id: x, pairs: [[a, c]]}\n  - {type: abb}\n"
+                                  "  - {type: identify, id: x, stimuli: [a], labels: [l]}\n");
+  const auto r = run_cli("protocol check " + p, dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(ms::test::count_lines(r.err), 3u) << r.err;
+  EXPECT_NE(r.err.find(p + ":5:35: block 'x': unknown stimulus 'c'"), std::string::npos) << r.err;
+  const auto rj = run_cli("protocol check " + p + " --json", dir);
+  EXPECT_EQ(rj.exit_code, 2);
+  EXPECT_EQ(nlohmann::json::parse(rj.out)["problems"].size(), 3u);
+}
+
+TEST(ProtocolCli, ScheduleIsReproducible) {
+  TempDir dir;
+  const auto a = run_cli("protocol schedule " + kDemo + " --participant P01 --json", dir);
+  const auto b = run_cli("protocol schedule " + kDemo + " --participant P01 --json", dir);
+  const auto c = run_cli("protocol schedule " + kDemo + " --participant P02", dir);
+  EXPECT_EQ(a.exit_code, 0) << a.err;
+  EXPECT_EQ(c.exit_code, 0) << c.err;
+  EXPECT_EQ(a.out, b.out);
+  EXPECT_FALSE(nlohmann::json::parse(a.out)["trials"].empty());
+  EXPECT_NE(c.out.find("mushra"), std::string::npos);
+}
