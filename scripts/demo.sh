@@ -3,7 +3,7 @@
 # and show where they are. Re-running renders only what changed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-./scripts/setup.sh
+./scripts/setup.sh -DMODALSTUDY_WERROR=ON  # same configuration as test.sh: one build serves both
 echo "== rendering the shipped stimuli (both cores)"
 build/bin/modalstudy stimuli build stimuli -o build/stimuli
 echo "== one of them, regenerated with an override and its modes written out"
