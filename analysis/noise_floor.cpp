@@ -6,70 +6,76 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
+#include <vector>
 
 #include "analysis/subband.hpp"
 
 namespace ms {
 
-double estimate_noise_sigma(const std::vector<double>& x) {
-  const std::size_t n = std::max<std::size_t>(std::min<std::size_t>(x.size(), 64), x.size() / 4);
-  if (n < 16) return 0.0;
-  const std::size_t size = nice_fft_size(n), start = x.size() - n;
-  double* in = fftw_alloc_real(size);
-  fftw_complex* out = fftw_alloc_complex(size / 2 + 1);
-  fftw_plan plan = fftw_plan_dft_r2c_1d(int(size), in, out, FFTW_ESTIMATE);
-  std::fill(in, in + size, 0.0);
+namespace {
+
+// Hann-windowed periodogram of the recording's last quarter (at least 64 samples): the interior bins
+// (0 Hz and Nyquist are chi-square with one degree of freedom), the window energy and the FFT size.
+struct TailPeriodogram {
+  std::vector<double> power;  // bins 1 .. size/2 - 1
   double window_energy = 0.0;
+  std::size_t size = 0;
+};
+
+std::optional<TailPeriodogram> tail_periodogram(const std::vector<double>& x) {
+  const std::size_t n = std::max<std::size_t>(std::min<std::size_t>(x.size(), 64), x.size() / 4);
+  if (n < 16) return std::nullopt;
+  TailPeriodogram t;
+  t.size = nice_fft_size(n);
+  const std::size_t start = x.size() - n;
+  double* in = fftw_alloc_real(t.size);
+  fftw_complex* out = fftw_alloc_complex(t.size / 2 + 1);
+  fftw_plan plan = fftw_plan_dft_r2c_1d(int(t.size), in, out, FFTW_ESTIMATE);
+  std::fill(in, in + t.size, 0.0);
   for (std::size_t i = 0; i < n; ++i) {
     const double w = 0.5 - 0.5 * std::cos(2.0 * std::numbers::pi * (double(i) + 0.5) / double(n));
     in[i] = w * x[start + i];
-    window_energy += w * w;
+    t.window_energy += w * w;
   }
   fftw_execute(plan);
-  // Interior bins only: 0 Hz and Nyquist are chi-square with one degree of freedom.
-  std::vector<double> power;
-  power.reserve(size / 2);
-  for (std::size_t k = 1; k < size / 2; ++k) power.push_back(out[k][0] * out[k][0] + out[k][1] * out[k][1]);
+  t.power.reserve(t.size / 2);
+  for (std::size_t k = 1; k < t.size / 2; ++k) t.power.push_back(out[k][0] * out[k][0] + out[k][1] * out[k][1]);
   fftw_destroy_plan(plan);
   fftw_free(out);
   fftw_free(in);
+  return t;
+}
+
+// Median periodogram value -> white-noise variance (the median of a chi-square(2)/2 is ln 2).
+double median_variance(std::vector<double> power, double window_energy) {
   auto mid = power.begin() + std::ptrdiff_t(power.size() / 2);
   std::nth_element(power.begin(), mid, power.end());
-  return std::sqrt(*mid / (std::numbers::ln2 * window_energy));
+  return *mid / (std::numbers::ln2 * window_energy);
+}
+
+}  // namespace
+
+double estimate_noise_sigma(const std::vector<double>& x) {
+  const auto t = tail_periodogram(x);
+  return t ? std::sqrt(median_variance(t->power, t->window_energy)) : 0.0;
 }
 
 NoiseProfile estimate_noise_profile(const std::vector<double>& x, double fs, double white_sigma) {
   NoiseProfile p;
   p.white_variance = white_sigma * white_sigma;
-  const std::size_t n = std::max<std::size_t>(std::min<std::size_t>(x.size(), 64), x.size() / 4);
-  if (n < 16) return p;
-  const std::size_t size = nice_fft_size(n), start = x.size() - n;
-  double* in = fftw_alloc_real(size);
-  fftw_complex* out = fftw_alloc_complex(size / 2 + 1);
-  fftw_plan plan = fftw_plan_dft_r2c_1d(int(size), in, out, FFTW_ESTIMATE);
-  std::fill(in, in + size, 0.0);
-  double window_energy = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double w = 0.5 - 0.5 * std::cos(2.0 * std::numbers::pi * (double(i) + 0.5) / double(n));
-    in[i] = w * x[start + i];
-    window_energy += w * w;
-  }
-  fftw_execute(plan);
-  const double bin_hz = fs / double(size);
-  std::vector<double> power;
-  for (std::size_t k = 1; k < size / 2;) {
+  const auto t = tail_periodogram(x);
+  if (!t) return p;
+  const double bin_hz = fs / double(t->size);
+  // Third-octave bands (at least 64 Hz wide); power[i] is bin k = i + 1.
+  for (std::size_t k = 1; k < t->size / 2;) {
     const double lo = double(k) * bin_hz, hi = std::max(lo + 64.0, lo * std::cbrt(2.0));
-    power.clear();
-    for (; k < size / 2 && double(k) * bin_hz < hi; ++k) power.push_back(out[k][0] * out[k][0] + out[k][1] * out[k][1]);
-    auto mid = power.begin() + std::ptrdiff_t(power.size() / 2);
-    std::nth_element(power.begin(), mid, power.end());
-    const double v = *mid / (std::numbers::ln2 * window_energy);
+    std::vector<double> band;
+    for (; k < t->size / 2 && double(k) * bin_hz < hi; ++k) band.push_back(t->power[k - 1]);
+    const double v = median_variance(std::move(band), t->window_energy);
     p.upper_hz.push_back(double(k) * bin_hz);
     p.variance.push_back(v > 4.0 * p.white_variance ? v : p.white_variance);
   }
-  fftw_destroy_plan(plan);
-  fftw_free(out);
-  fftw_free(in);
   return p;
 }
 
