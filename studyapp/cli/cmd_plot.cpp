@@ -16,6 +16,7 @@
 #include "analysis/emg_likelihood.hpp"
 #include "analysis/tidy_csv.hpp"
 #include "studyapp/cli/commands.hpp"
+#include "studyapp/cli/prune_csv.hpp"
 #include "studyapp/plots/plots.hpp"
 #include "synthesis/input_error.hpp"
 #include "synthesis/masking_pruning.hpp"
@@ -261,15 +262,7 @@ void register_plot(CLI::App& app) {
       std::replace(option.begin(), option.end(), '_', '-');
       throw option_error(option + " " + e.problem());
     }
-    std::vector<int> line_of_mode;
-    const ModalModel model = read_modes_csv(opt->modes, &line_of_mode);
-    PruneResult r;
-    try {
-      r = prune_modes(model, o);
-    } catch (const PruneError& e) {
-      const int line = e.mode() < line_of_mode.size() ? line_of_mode[e.mode()] : 0;
-      throw InputError(SourceLocation{opt->modes, line, 0}, e.field() + " " + e.problem());
-    }
+    const auto [model, r] = prune_modes_csv(opt->modes, o);
     const std::string name = fs::path(opt->modes).filename().string();
     plot_masking_model(model, r, opt->output,
                        "Masking: " + name + " (a_v = " + format_g(o.threshold_db) + " dB, " +

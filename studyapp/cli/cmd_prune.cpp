@@ -12,6 +12,7 @@
 
 #include "synthesis/masking_pruning.hpp"
 #include "studyapp/cli/commands.hpp"
+#include "studyapp/cli/prune_csv.hpp"
 #include "synthesis/input_error.hpp"
 #include "synthesis/modes_csv.hpp"
 
@@ -127,15 +128,7 @@ void register_prune(CLI::App& app) {
       keep = std::size_t(k);
     }
 
-    std::vector<int> line_of_mode;
-    const ModalModel model = read_modes_csv(opt->modes, &line_of_mode);
-    PruneResult r;
-    try {
-      r = prune_modes(model, o);
-    } catch (const PruneError& e) {
-      const int line = e.mode() < line_of_mode.size() ? line_of_mode[e.mode()] : 0;
-      throw InputError(SourceLocation{opt->modes, line, 0}, e.field() + " " + e.problem());
-    }
+    const auto [model, r] = prune_modes_csv(opt->modes, o);
 
     std::size_t written = 0;
     if (!opt->output.empty()) {
