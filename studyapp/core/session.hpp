@@ -1,0 +1,80 @@
+// A participant's session: the protocol's schedule walked trial by trial. Every answer is committed to
+// the results store before the session moves on; opening the same study + participant + database
+// again resumes the unfinished session at its first unanswered trial with the same schedule.
+// Staircase trials run their track inside the trial: each step is committed as a "step" event, so a
+// track interrupted by a crash continues where it stopped.
+#pragma once
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "studyapp/core/protocol.hpp"
+#include "studyapp/core/results_store.hpp"
+#include "studyapp/core/schedule.hpp"
+#include "studyapp/core/staircase_track.hpp"
+
+namespace ms {
+
+class Session {
+ public:
+  // `stimulus_hashes` (name -> hash, see StimulusCache) are stored with each scheduled trial.
+  // Throws InputError if the database belongs to a different version of the same study (protocol
+  // hash differs) or is not a ModalStudy database.
+  Session(const Protocol& protocol, const std::string& protocol_text, const std::string& participant,
+          const std::string& db_path, const std::map<std::string, std::string>& stimulus_hashes,
+          std::int64_t now_ms);
+
+  const Protocol& protocol() const { return protocol_; }
+  const Schedule& schedule() const { return schedule_; }
+  std::int64_t id() const { return session_; }
+  bool resumed() const { return resumed_; }  // an unfinished session was continued
+  ResultsStore& store() { return *store_; }
+
+  bool finished() const { return current_ >= schedule_.trials.size(); }
+  std::size_t current_index() const { return current_; }   // into schedule().trials
+  const Trial& current() const;                            // precondition: !finished()
+  const Block& current_block() const;
+  std::size_t answered() const;                            // trials answered so far
+  std::size_t total() const { return schedule_.trials.size(); }
+  // True right after answering a trial that ends a stretch of `break_after` trials.
+  bool at_break() const { return at_break_; }
+
+  // Commits a play/stop/switch event of the current trial.
+  void log_event(EventKind kind, const std::string& stimulus, std::int64_t now_ms);
+
+  // Checks the answer (see response_format.hpp), commits it, then advances. Throws
+  // std::invalid_argument naming the problem if the answer does not fit the trial (nothing stored).
+  void answer(const nlohmann::json& value, double rt_ms, int plays, std::int64_t now_ms);
+
+  // Staircase trials: the live track of the current trial (rebuilt from stored steps on resume).
+  StaircaseTrack& staircase();
+  // Commits one step; when the track finishes, answers the trial with the whole track and advances.
+  void staircase_step(bool correct, double rt_ms, std::int64_t now_ms);
+
+  // Marks the session finished in the store (done automatically after the last answer).
+  void finish(std::int64_t now_ms);
+
+ private:
+  void advance();
+
+  const Protocol& protocol_;
+  Schedule schedule_;
+  std::unique_ptr<ResultsStore> store_;
+  std::int64_t session_ = 0;
+  bool resumed_ = false;
+  std::size_t current_ = 0;
+  bool at_break_ = false;
+  std::optional<StaircaseTrack> track_;
+  int track_plays_ = 0;
+  double track_rt_ms_ = 0.0;
+};
+
+// Milliseconds since the Unix epoch (system clock).
+std::int64_t unix_now_ms();
+
+}  // namespace ms

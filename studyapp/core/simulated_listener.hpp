@@ -1,0 +1,47 @@
+// The autopilot's listener: answers any trial from perceptual distances between the trial's stimuli
+// (perceptual_distance.hpp) plus Gaussian decision noise, seeded, so a protocol can be piloted,
+// demonstrated and tested without a person. Its answers follow the response formats of
+// response_format.hpp, and its reaction times grow with how hard the decision was.
+#pragma once
+#include <cstdint>
+#include <map>
+#include <random>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "studyapp/core/perceptual_distance.hpp"
+#include "studyapp/core/protocol.hpp"
+#include "studyapp/core/schedule.hpp"
+#include "studyapp/core/stimulus_cache.hpp"
+
+namespace ms {
+
+struct SimulatedAnswer {
+  nlohmann::json value;
+  double rt_ms = 0.0;
+  int plays = 1;
+};
+
+class SimulatedListener {
+ public:
+  // noise_db: standard deviation of the internal noise added to every distance (dB).
+  SimulatedListener(StimulusCache& cache, std::uint64_t seed, double noise_db = 1.0);
+
+  SimulatedAnswer answer(const Block& block, const Trial& trial);
+  // One staircase step: is the comparison at `level` told apart from the reference?
+  bool staircase_correct(const StaircaseBlock& block, double level);
+  double distance_db(const std::string& a, const std::string& b);  // between named stimuli
+
+ private:
+  const PerceptualProfile& profile(const std::string& key, const Samples& samples);
+  const PerceptualProfile& profile(const std::string& name);
+  double noisy(double d);
+
+  StimulusCache& cache_;
+  std::mt19937_64 rng_;
+  double noise_db_;
+  std::map<std::string, PerceptualProfile> profiles_;  // by stimulus hash
+};
+
+}  // namespace ms
