@@ -47,11 +47,12 @@ StimulusCache::StimulusCache(const Protocol& protocol, std::string cache_dir)
       if (!pending.count(s.name)) continue;
       switch (s.kind) {
         case StimulusKind::paramset: {
-          const ParamSet p = load_paramset(resolve_protocol_path(protocol_, s.path), s.overrides);
-          if (p.sample_rate_hz != sample_rate_hz_)
-            throw InputError(s.path_where, "parameter set renders at " + number_text(p.sample_rate_hz) +
+          auto p = std::make_shared<const ParamSet>(load_paramset(resolve_protocol_path(protocol_, s.path), s.overrides));
+          if (p->sample_rate_hz != sample_rate_hz_)
+            throw InputError(s.path_where, "parameter set renders at " + number_text(p->sample_rate_hz) +
                                                " Hz but the protocol's sample_rate is " + number_text(sample_rate_hz_));
-          hashes_[s.name] = p.recipe_hash;
+          hashes_[s.name] = p->recipe_hash;
+          paramsets_[s.name] = std::move(p);
           break;
         }
         case StimulusKind::derived: {
@@ -124,9 +125,7 @@ Samples StimulusCache::make(const std::string& name) {
   const std::string& h = hash(name);
   switch (s.kind) {
     case StimulusKind::paramset:
-      return lookup_or_render(h, [&] {
-        return render_stimulus(load_paramset(resolve_protocol_path(protocol_, s.path), s.overrides)).audio.samples;
-      });
+      return lookup_or_render(h, [&] { return render_stimulus(*paramsets_.at(name)).audio.samples; });
     case StimulusKind::derived:
       return lookup_or_render(h, [&] {
         const Samples parent = make(s.derive_from.name);
