@@ -81,7 +81,7 @@ void BM_AdjustSliderMove(benchmark::State& state) {
   double alpha = 0.5;
   for (auto _ : state) {
     alpha += 0.001;  // every move a new recipe: a cache miss, as a real slider drag gives
-    const auto s = cache.samples_with("steel-rayleigh", {"damping.alpha1=" + std::to_string(alpha)});
+    const auto s = cache.samples_with("metal-rayleigh", {"damping.alpha1=" + std::to_string(alpha)});
     benchmark::DoNotOptimize(s->data());
   }
 }
