@@ -9,9 +9,11 @@
 #include <variant>
 #include <vector>
 
+#include "studyapp/core/autopilot.hpp"
 #include "studyapp/core/protocol_parser.hpp"
 #include "studyapp/core/protocol_validator.hpp"
 #include "studyapp/core/schedule.hpp"
+#include "support/test_util.hpp"
 
 namespace {
 
@@ -163,6 +165,26 @@ TEST(ReplicationProtocols, SynthesisMethodsAbIsBipolar) {
     const ms::StimulusSource* rec = p.find_stimulus("rec-" + pr[0].name.substr(4));
     ASSERT_NE(rec, nullptr) << pr[0].name;
     EXPECT_EQ(rec->kind, ms::StimulusKind::file);
+  }
+}
+
+// The simulated listener runs each whole session (as `studyapp --autopilot` would) and answers every
+// trial: the protocols are runnable end to end, stimuli, recordings and staircases included.
+TEST(ReplicationProtocols, AutopilotAnswersEveryTrial) {
+  for (const auto& name : kReplications) {
+    const ms::test::TempDir dir;
+    ms::AutopilotOptions o;
+    o.protocol_path = protocol_path(name);
+    o.participant = "P01";
+    o.db_path = dir.file(name + ".sqlite");
+    o.cache_dir = dir.file("cache");
+    o.seed = 1;
+    const ms::AutopilotSummary s = ms::run_autopilot(o);
+    EXPECT_TRUE(s.finished) << name;
+    EXPECT_FALSE(s.resumed) << name;
+    EXPECT_GT(s.total, 0u) << name;
+    EXPECT_EQ(s.answered_now, s.total) << name;
+    EXPECT_EQ(s.total, ms::make_schedule(load(name), "P01").trials.size()) << name;
   }
 }
 
