@@ -82,10 +82,15 @@ TEST(ReplicationProtocols, VanDenDoel2002KeepsThePapersDesign) {
       EXPECT_TRUE(g.all_pairs);
       EXPECT_EQ(g.stimuli.size(), 12u);  // 11 tokens + the reference
       const auto trials = trials_of(schedule, "dissimilarity-" + object + "-" + method);
-      EXPECT_EQ(trials.size(), 66u);  // C(12, 2)
+      EXPECT_EQ(trials.size(), 78u);  // C(12, 2) distinct + 12 identical pairs, as in the paper
       std::set<std::set<std::string>> distinct;
-      for (const auto& t : trials) distinct.insert({t.stimuli[0], t.stimuli[1]});
-      EXPECT_EQ(distinct.size(), 66u);
+      std::size_t identical = 0;
+      for (const auto& t : trials) {
+        distinct.insert({t.stimuli[0], t.stimuli[1]});
+        identical += t.stimuli[0] == t.stimuli[1];
+      }
+      EXPECT_EQ(distinct.size(), 78u);
+      EXPECT_EQ(identical, 12u);
 
       const auto& ab = std::get<ms::AbBlock>(block(p, "tokens-" + object + "-" + method).body);
       EXPECT_EQ(ab.mode, ms::AbMode::same_different);
@@ -165,6 +170,14 @@ TEST(ReplicationProtocols, SynthesisMethodsAbIsBipolar) {
     const ms::StimulusSource* rec = p.find_stimulus("rec-" + pr[0].name.substr(4));
     ASSERT_NE(rec, nullptr) << pr[0].name;
     EXPECT_EQ(rec->kind, ms::StimulusKind::file);
+  }
+  // Each pair carries its object's recording as the reference, played after A and B.
+  ASSERT_EQ(ab.references.size(), ab.pairs.size());
+  for (std::size_t i = 0; i < ab.pairs.size(); ++i) EXPECT_EQ(ab.references[i].name, "rec-" + ab.pairs[i][0].name.substr(4));
+  for (const auto& t : trials_of(ms::make_schedule(p, "P01"), "methods")) {
+    ASSERT_EQ(t.stimuli.size(), 3u);
+    EXPECT_EQ(t.stimuli[2], t.reference);
+    EXPECT_EQ(t.reference.substr(4), t.stimuli[0].substr(4));
   }
 }
 
