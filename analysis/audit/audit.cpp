@@ -13,6 +13,7 @@ AuditData make_audit_data(const std::vector<Recording>& recordings, const AuditO
   std::vector<std::vector<Mode>> modes;
   for (const Strike& s : data.measured.strikes) modes.push_back(s.features.modes);
   data.tracks = match_modes(modes, options.matching);
+  data.strike_variation_db = strike_variation(data.measured);
   return data;
 }
 

@@ -84,6 +84,27 @@ double mean_gap(const AuditModel& model, const AuditData& data, const std::vecto
   return which.empty() ? 0.0 : sum / double(which.size());
 }
 
+double strike_variation(const MeasuredStrikes& measured) {
+  const auto energy = [](const BarkSpectrogram& b) {
+    double e = 0.0;
+    for (double p : b.power) e += p;
+    return e;
+  };
+  std::size_t ref = 0;
+  for (std::size_t s = 0; s < measured.strikes.size(); ++s)
+    if (energy(measured.strikes[s].spectrogram) > energy(measured.strikes[ref].spectrogram)) ref = s;
+  const BarkSpectrogram& r = measured.strikes[ref].spectrogram;
+  double sum = 0.0;
+  for (std::size_t s = 0; s < measured.strikes.size(); ++s) {
+    if (s == ref) continue;
+    BarkSpectrogram scaled = r;
+    const double k = energy(measured.strikes[s].spectrogram) / std::max(energy(r), 1e-300);
+    for (double& p : scaled.power) p *= k;
+    sum += gap_map(measured.strikes[s].spectrogram, scaled).gap_db;
+  }
+  return measured.strikes.size() > 1 ? sum / double(measured.strikes.size() - 1) : 0.0;
+}
+
 void fit_gain(AuditModel& model, const AuditData& data, std::size_t s) {
   std::vector<double> ratios;
   const double tau = model.contact_s.empty() ? 0.0 : model.contact_s[s];

@@ -42,6 +42,10 @@ struct AuditModel {
 struct AuditData {
   MeasuredStrikes measured;
   std::vector<ModeTrack> tracks;
+  // Strike-to-strike variation: mean over strikes of the gap between the strike and the loudest
+  // strike scaled to its energy (dB). Strikes differing only in gain give ~0: then no effect that
+  // lives in the differences between strikes (support_damping, contact_duration) can be named.
+  double strike_variation_db = 0.0;
   std::size_t strike_count() const { return measured.strikes.size(); }
 };
 
@@ -59,6 +63,9 @@ GapMap strike_gap(const AuditModel& model, const AuditData& data, std::size_t st
 
 // Mean gap over the given strikes (all when empty).
 double mean_gap(const AuditModel& model, const AuditData& data, const std::vector<std::size_t>& strikes = {});
+
+// The strike_variation_db of a set of strikes.
+double strike_variation(const MeasuredStrikes& measured);
 
 // Per-strike gain from the strike's own measured track amplitudes (median log ratio against the
 // model's amplitudes, contact factor included): the one latent every model has.

@@ -40,6 +40,9 @@ Effect noise_floor_effect();
 std::vector<Effect> effect_catalog();
 const Effect* find_effect(const std::vector<Effect>& catalog, const std::string& name);
 
+// Strikes that differ by less than this (AuditData::strike_variation_db) differ only in gain.
+constexpr double kMinStrikeVariationDb = 0.1;  // tuning seeds: clean 0.00, weakest hidden 0.29 dB
+
 // Helpers the effects share.
 std::vector<std::size_t> strikes_present(const ModeTrack& track);
 double median(std::vector<double> v);

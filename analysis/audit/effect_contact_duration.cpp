@@ -130,7 +130,8 @@ Detection detect(const AuditData& data, const AuditModel& current) {
   const double before = rms_db(current, data), after = rms_db(with, data);
   const double order = brighter_when_harder(with);
   d.statistic = before - after;
-  d.passes = d.statistic >= kMinImprovementDb && with.contact_exponent > 0.05 && order >= 0.7;
+  d.passes = d.statistic >= kMinImprovementDb && with.contact_exponent > 0.05 && order >= 0.7 &&
+             data.strike_variation_db >= kMinStrikeVariationDb;
   double lo = 1e300, hi = 0.0;
   for (double t : with.contact_s) { lo = std::min(lo, t); hi = std::max(hi, t); }
   char buf[300];

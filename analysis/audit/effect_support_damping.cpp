@@ -15,6 +15,7 @@ namespace ms::audit {
 
 namespace {
 
+constexpr double kStrongWithin = 0.0316;  // -30 dB
 constexpr double kMinSpread = 0.15;  // median (max d - min d) / min d over modes (tuning seeds)
 
 struct Spread {
@@ -23,8 +24,15 @@ struct Spread {
 };
 
 Spread decay_spread(const AuditData& data) {
+  // Only modes within 30 dB of the strongest: faint ones near the noise have noisy decays.
+  double strongest = 0.0;
+  for (const ModeTrack& t : data.tracks)
+    for (const TrackObservation& o : t.strikes) strongest = std::max(strongest, o.amp);
   std::vector<double> spreads;
   for (const ModeTrack& t : data.tracks) {
+    double loudest = 0.0;
+    for (const TrackObservation& o : t.strikes) loudest = std::max(loudest, o.amp);
+    if (loudest < kStrongWithin * strongest) continue;
     double lo = 1e300, hi = 0.0;
     int n = 0;
     for (const TrackObservation& o : t.strikes)
@@ -55,7 +63,7 @@ Detection detect(const AuditData& data, const AuditModel& model) {
   Detection d;
   const Spread sp = decay_spread(data);
   d.statistic = sp.median_spread;
-  d.passes = sp.modes >= 3 && sp.median_spread >= kMinSpread;
+  d.passes = sp.modes >= 3 && sp.median_spread >= kMinSpread && data.strike_variation_db >= kMinStrikeVariationDb;
   char buf[300];
   std::snprintf(buf, sizeof buf, "the same mode decays up to %.0f %% faster in one strike than in another "
                 "(median over %zu modes)", 100.0 * sp.median_spread, sp.modes);
