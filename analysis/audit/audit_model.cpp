@@ -8,6 +8,12 @@
 
 namespace ms::audit {
 
+std::vector<std::size_t> all_strikes(const AuditData& data) {
+  std::vector<std::size_t> s(data.strike_count());
+  for (std::size_t i = 0; i < s.size(); ++i) s[i] = i;
+  return s;
+}
+
 double strike_decay(const AuditModel& model, std::size_t s, std::size_t n) {
   double d = model.modes[n].decay_per_s;
   if (!model.extra_decay_per_s.empty()) d += model.extra_decay_per_s[s][n];
@@ -76,9 +82,7 @@ GapMap strike_gap(const AuditModel& model, const AuditData& data, std::size_t s)
 }
 
 double mean_gap(const AuditModel& model, const AuditData& data, const std::vector<std::size_t>& strikes) {
-  std::vector<std::size_t> which = strikes;
-  if (which.empty())
-    for (std::size_t s = 0; s < data.strike_count(); ++s) which.push_back(s);
+  const std::vector<std::size_t> which = strikes.empty() ? all_strikes(data) : strikes;
   double sum = 0.0;
   for (std::size_t s : which) sum += strike_gap(model, data, s).gap_db;
   return which.empty() ? 0.0 : sum / double(which.size());

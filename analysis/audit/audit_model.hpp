@@ -49,6 +49,9 @@ struct AuditData {
   std::size_t strike_count() const { return measured.strikes.size(); }
 };
 
+// 0 .. strike_count - 1 (every strike, e.g. as the training set of an in-sample fit).
+std::vector<std::size_t> all_strikes(const AuditData& data);
+
 // The modes that sound in strike s (gain, extra decay, contact factor, doublets applied).
 ModalModel strike_model(const AuditModel& model, std::size_t strike);
 

@@ -25,12 +25,6 @@ double fit_linear_relative(const std::vector<double>& x, const std::vector<doubl
   return sse;
 }
 
-std::vector<std::size_t> all_strikes(const AuditData& data) {
-  std::vector<std::size_t> s(data.strike_count());
-  for (std::size_t i = 0; i < s.size(); ++i) s[i] = i;
-  return s;
-}
-
 }  // namespace
 
 DampingLaw fit_law_relative(const std::vector<DampingPoint>& points, DampingKind kind) {

@@ -39,9 +39,7 @@ double cross_validated_gap(const AuditData& data, const Recipe& recipe) {
 }
 
 double in_sample_gap(const AuditData& data, const Recipe& recipe, AuditModel* fitted) {
-  std::vector<std::size_t> all(data.strike_count());
-  for (std::size_t s = 0; s < all.size(); ++s) all[s] = s;
-  AuditModel model = fit_recipe(data, recipe, all);
+  AuditModel model = fit_recipe(data, recipe, all_strikes(data));
   const double gap = mean_gap(model, data);
   if (fitted) *fitted = std::move(model);
   return gap;

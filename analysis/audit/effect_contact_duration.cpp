@@ -104,12 +104,6 @@ double rms_db(const AuditModel& model, const AuditData& data) {
   return k > 0 ? 20.0 / std::log(10.0) * std::sqrt(ss / double(k)) : 0.0;
 }
 
-std::vector<std::size_t> all(const AuditData& data) {
-  std::vector<std::size_t> s(data.strike_count());
-  for (std::size_t i = 0; i < s.size(); ++i) s[i] = i;
-  return s;
-}
-
 // Spearman-like check on (gain, tau): the fraction of strike pairs where the harder strike has the
 // shorter (or equal) contact.
 double brighter_when_harder(const AuditModel& model) {
@@ -126,7 +120,7 @@ double brighter_when_harder(const AuditModel& model) {
 Detection detect(const AuditData& data, const AuditModel& current) {
   Detection d;
   AuditModel with = current;
-  extend(data, with, all(data));
+  extend(data, with, all_strikes(data));
   const double before = rms_db(current, data), after = rms_db(with, data);
   const double order = brighter_when_harder(with);
   d.statistic = before - after;
@@ -155,15 +149,8 @@ Parameters parameters(const AuditData&, const AuditModel& model) {
 }  // namespace
 
 Effect contact_duration_effect() {
-  Effect e;
-  e.name = "contact_duration";
-  e.min_strikes = 2;
-  e.penalty_db = 0.05;
-  e.detect = detect;
-  e.extend = extend;
-  e.adapt = adapt;
-  e.parameters = parameters;
-  return e;
+  return {.name = "contact_duration", .min_strikes = 2, .penalty_db = 0.05,
+          .detect = detect, .extend = extend, .adapt = adapt, .parameters = parameters};
 }
 
 }  // namespace ms::audit

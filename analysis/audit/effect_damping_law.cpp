@@ -15,12 +15,6 @@ namespace {
 constexpr double kMinImprovement = 0.05;  // RMS log residual, i.e. ~5 % of every decay (tuning seeds)
 constexpr std::size_t kMinTracks = 5;
 
-std::vector<std::size_t> all(const AuditData& data) {
-  std::vector<std::size_t> s(data.strike_count());
-  for (std::size_t i = 0; i < s.size(); ++i) s[i] = i;
-  return s;
-}
-
 // Current model's c at each track's median point (the model's own decay of the mode on that track).
 std::vector<double> current_c(const AuditModel& model, const std::vector<std::size_t>& tracks) {
   std::vector<double> c;
@@ -42,7 +36,7 @@ std::vector<double> law_c(const DampingLaw& law, const std::vector<DampingPoint>
 Detection detect(const AuditData& data, const AuditModel& current) {
   Detection d;
   std::vector<std::size_t> tracks;
-  const auto pts = track_median_points(data, all(data), &tracks);
+  const auto pts = track_median_points(data, all_strikes(data), &tracks);
   if (pts.size() < kMinTracks) {
     d.evidence = "too few modes to compare damping laws";
     return d;
@@ -80,14 +74,8 @@ Parameters parameters(const AuditData&, const AuditModel& model) {
 }  // namespace
 
 Effect damping_law_effect() {
-  Effect e;
-  e.name = "damping_law";
-  e.min_strikes = 1;
-  e.penalty_db = 0.05;
-  e.detect = detect;
-  e.extend = extend;
-  e.parameters = parameters;
-  return e;
+  return {.name = "damping_law", .min_strikes = 1, .penalty_db = 0.05,
+          .detect = detect, .extend = extend, .parameters = parameters};
 }
 
 }  // namespace ms::audit

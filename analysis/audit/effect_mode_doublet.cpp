@@ -53,15 +53,9 @@ std::vector<std::pair<std::size_t, Pair>> split_tracks(const AuditData& data, co
   return out;
 }
 
-std::vector<std::size_t> all(const AuditData& data) {
-  std::vector<std::size_t> s(data.strike_count());
-  for (std::size_t i = 0; i < s.size(); ++i) s[i] = i;
-  return s;
-}
-
 Detection detect(const AuditData& data, const AuditModel&) {
   Detection d;
-  const auto split = split_tracks(data, all(data));
+  const auto split = split_tracks(data, all_strikes(data));
   d.statistic = double(split.size());
   d.passes = !split.empty();
   if (split.empty()) {
@@ -99,14 +93,8 @@ Parameters parameters(const AuditData&, const AuditModel& model) {
 }  // namespace
 
 Effect mode_doublet_effect() {
-  Effect e;
-  e.name = "mode_doublet";
-  e.min_strikes = 1;
-  e.penalty_db = 0.02;
-  e.detect = detect;
-  e.extend = extend;
-  e.parameters = parameters;
-  return e;
+  return {.name = "mode_doublet", .min_strikes = 1, .penalty_db = 0.02,
+          .detect = detect, .extend = extend, .parameters = parameters};
 }
 
 }  // namespace ms::audit

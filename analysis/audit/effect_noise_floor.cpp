@@ -34,16 +34,10 @@ void extend(const AuditData& data, AuditModel& model, const std::vector<std::siz
   for (std::size_t b = 0; b < g.bands; ++b) model.noise_band_power[b] = median(per_band[b]);
 }
 
-std::vector<std::size_t> all(const AuditData& data) {
-  std::vector<std::size_t> s(data.strike_count());
-  for (std::size_t i = 0; i < s.size(); ++i) s[i] = i;
-  return s;
-}
-
 Detection detect(const AuditData& data, const AuditModel& current) {
   Detection d;
   AuditModel with = current;
-  extend(data, with, all(data));
+  extend(data, with, all_strikes(data));
   const double before = mean_gap(current, data), after = mean_gap(with, data);
   d.statistic = before - after;
   d.passes = d.statistic >= kMinGapImprovementDb;
@@ -75,14 +69,8 @@ Parameters parameters(const AuditData& data, const AuditModel& model) {
 double noise_white_sigma(const AuditData& data, const AuditModel& model) { return white_sigma(data, model); }
 
 Effect noise_floor_effect() {
-  Effect e;
-  e.name = "noise_floor";
-  e.min_strikes = 1;
-  e.penalty_db = 0.05;
-  e.detect = detect;
-  e.extend = extend;
-  e.parameters = parameters;
-  return e;
+  return {.name = "noise_floor", .min_strikes = 1, .penalty_db = 0.05,
+          .detect = detect, .extend = extend, .parameters = parameters};
 }
 
 }  // namespace ms::audit

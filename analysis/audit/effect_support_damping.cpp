@@ -46,12 +46,6 @@ Spread decay_spread(const AuditData& data) {
   return {median(spreads), spreads.size()};
 }
 
-std::vector<std::size_t> all(const AuditData& data) {
-  std::vector<std::size_t> s(data.strike_count());
-  for (std::size_t i = 0; i < s.size(); ++i) s[i] = i;
-  return s;
-}
-
 // EMG fit of the material law (the model's law kind) on the given strikes' points.
 DampingFit emg_fit(const AuditData& data, const AuditModel& model, const std::vector<std::size_t>& strikes) {
   const auto pts = track_points(data, strikes);
@@ -68,9 +62,9 @@ Detection detect(const AuditData& data, const AuditModel& model) {
   std::snprintf(buf, sizeof buf, "the same mode decays up to %.0f %% faster in one strike than in another "
                 "(median over %zu modes)", 100.0 * sp.median_spread, sp.modes);
   d.evidence = buf;
-  const auto pts = track_points(data, all(data));
+  const auto pts = track_points(data, all_strikes(data));
   if (d.passes && pts.size() >= 8) {
-    const DampingFit emg = emg_fit(data, model, all(data));
+    const DampingFit emg = emg_fit(data, model, all_strikes(data));
     if (emg.eta_s && *emg.eta_s > 0 && emg.sigma_per_s) {
       std::snprintf(buf, sizeof buf, "; one-sided: an EMG fit puts a mean excess of %.2f 1/s (decay) above "
                     "the material law, spread %.2f 1/s", 0.5 / *emg.eta_s, 0.5 * *emg.sigma_per_s);
@@ -124,15 +118,8 @@ Parameters parameters(const AuditData& data, const AuditModel& model) {
 }  // namespace
 
 Effect support_damping_effect() {
-  Effect e;
-  e.name = "support_damping";
-  e.min_strikes = 2;
-  e.penalty_db = 0.05;
-  e.detect = detect;
-  e.extend = extend;
-  e.adapt = adapt;
-  e.parameters = parameters;
-  return e;
+  return {.name = "support_damping", .min_strikes = 2, .penalty_db = 0.05,
+          .detect = detect, .extend = extend, .adapt = adapt, .parameters = parameters};
 }
 
 }  // namespace ms::audit
