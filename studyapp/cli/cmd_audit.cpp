@@ -61,6 +61,11 @@ nlohmann::json result_json(const AuditResult& r, const audit::AuditData& data) {
     if (r.location.time_gap_db[f] > r.location.time_gap_db[worst_frame]) worst_frame = f;
   nlohmann::json worst_modes = nlohmann::json::array();
   for (std::size_t n : r.location.worst_modes) worst_modes.push_back(std::round(r.baseline.modes[n].freq_hz * 10) / 10);
+  // Per-mode residuals of the baseline, per strike (measured - model).
+  nlohmann::json residuals = nlohmann::json::array();
+  for (const auto& m : r.residuals_before)
+    residuals.push_back({{"strike", data.measured.strikes[m.strike].name}, {"freq_hz", m.freq_hz},
+                         {"freq_rel", m.freq_rel}, {"decay_rel", m.decay_rel}, {"amp_db", m.amp_db}});
   nlohmann::json untested = r.untested;
   return {{"metric", r.metric},
           {"gap_before", r.gap_before_db},
@@ -75,7 +80,9 @@ nlohmann::json result_json(const AuditResult& r, const audit::AuditData& data) {
                       {"worst_bands", worst_bands},
                       {"worst_time_s", g.frame_time_s(worst_frame)},
                       {"worst_modes_hz", worst_modes},
-                      {"decay_spread", r.decay_spread}}},
+                      {"decay_spread", r.decay_spread},
+                      {"strike_variation_db", data.strike_variation_db},
+                      {"mode_residuals", residuals}}},
           {"untested", untested}};
 }
 

@@ -4,6 +4,8 @@
 // line.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -36,6 +38,13 @@ TEST(AuditCli, GenerateThenAuditNamesTheHiddenEffectAndWritesAReport) {
   EXPECT_LT(j["gap_after"].get<double>(), 0.5 * j["gap_before"].get<double>());
   EXPECT_NEAR(j["named_effects"][0]["parameters"]["alpha3"].get<double>(), 1.0, 0.6);
   EXPECT_NE(j["named_effects"][0]["evidence"].get<std::string>().find("hybrid"), std::string::npos);
+  // Locate: per-strike gaps and per-mode residuals of every strike; a hidden law shows in the decays.
+  ASSERT_EQ(j["locate"]["strikes"].size(), 5u);
+  ASSERT_GE(j["locate"]["mode_residuals"].size(), 5u * 8u);
+  double worst_decay = 0.0;
+  for (const auto& m : j["locate"]["mode_residuals"]) worst_decay = std::max(worst_decay, std::abs(m["decay_rel"].get<double>()));
+  EXPECT_GT(worst_decay, 0.05);
+  EXPECT_LT(j["locate"]["strike_variation_db"].get<double>(), 0.1);
   for (const char* f : {"residual_before.png", "residual_after.png", "mode_amplitude_residuals.png",
                         "mode_decay_residuals.png", "damping.png", "model.yaml", "audit.json"})
     EXPECT_GT(fs::file_size(d.file(std::string("report/") + f)), 100u) << f;
