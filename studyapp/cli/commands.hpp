@@ -15,5 +15,7 @@ void register_stats(CLI::App& app);
 void register_plot(CLI::App& app);
 void register_export(CLI::App& app);
 void register_protocol(CLI::App& app);
+void register_audit(CLI::App& app);
+void register_audit_generate(CLI::App& app);
 
 }  // namespace ms::cli

@@ -21,6 +21,8 @@ int main(int argc, char** argv) {
   ms::cli::register_plot(app);
   ms::cli::register_export(app);
   ms::cli::register_protocol(app);
+  ms::cli::register_audit(app);
+  ms::cli::register_audit_generate(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

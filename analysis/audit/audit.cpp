@@ -1,0 +1,166 @@
+#include "analysis/audit/audit.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "analysis/audit/baseline_fit.hpp"
+
+namespace ms::audit {
+
+AuditData make_audit_data(const std::vector<Recording>& recordings, const AuditOptions& options) {
+  AuditData data;
+  data.measured = prepare_strikes(recordings, options.strikes);
+  std::vector<std::vector<Mode>> modes;
+  for (const Strike& s : data.measured.strikes) modes.push_back(s.features.modes);
+  data.tracks = match_modes(modes, options.matching);
+  data.strike_variation_db = strike_variation(data.measured);
+  return data;
+}
+
+std::vector<ModeResidual> mode_residuals(const AuditData& data, const AuditModel& model) {
+  std::vector<ModeResidual> out;
+  for (std::size_t s = 0; s < data.strike_count(); ++s)
+    for (std::size_t n = 0; n < model.modes.size(); ++n) {
+      const AuditMode& m = model.modes[n];
+      if (m.track < 0) continue;
+      const TrackObservation& o = data.tracks[std::size_t(m.track)].strikes[s];
+      if (!o.present) continue;
+      const double d = strike_decay(model, s, n);
+      const double tau = model.contact_s.empty() ? 0.0 : model.contact_s[s];
+      const double a = m.amp * model.gain[s] * contact_gain(tau, d, m.freq_hz);
+      out.push_back({s, m.freq_hz, (o.freq_hz - m.freq_hz) / m.freq_hz, (o.decay_per_s - d) / d,
+                     20.0 * std::log10(o.amp / a)});
+    }
+  return out;
+}
+
+namespace {
+
+GapLocation locate(const AuditData& data, const AuditModel& model, const std::vector<GapMap>& maps) {
+  GapLocation loc;
+  const SpectrogramGrid& g = data.measured.grid;
+  std::vector<double> band_sum(g.bands, 0.0), band_n(g.bands, 0.0), time_sum(g.frames, 0.0), time_n(g.frames, 0.0);
+  for (const GapMap& m : maps) {
+    loc.strike_gap_db.push_back(m.gap_db);
+    for (std::size_t f = 0; f < m.frames; ++f)
+      for (std::size_t b = 0; b < m.bands; ++b) {
+        const double v = m.diff_db[f * m.bands + b];
+        if (std::isnan(v)) continue;
+        band_sum[b] += std::abs(v);
+        band_n[b] += 1;
+        time_sum[f] += std::abs(v);
+        time_n[f] += 1;
+      }
+  }
+  for (std::size_t b = 0; b < g.bands; ++b) loc.band_gap_db.push_back(band_n[b] > 0 ? band_sum[b] / band_n[b] : 0.0);
+  for (std::size_t f = 0; f < g.frames; ++f) loc.time_gap_db.push_back(time_n[f] > 0 ? time_sum[f] / time_n[f] : 0.0);
+  // Modes ranked by their mean |amplitude residual| + |decay residual| (in dB over the first second).
+  std::vector<std::pair<double, std::size_t>> score(model.modes.size(), {0.0, 0});
+  for (std::size_t n = 0; n < score.size(); ++n) score[n].second = n;
+  for (const ModeResidual& r : mode_residuals(data, model)) {
+    for (std::size_t n = 0; n < model.modes.size(); ++n)
+      if (model.modes[n].freq_hz == r.freq_hz)
+        score[n].first += std::abs(r.amp_db) + 8.686 * std::abs(r.decay_rel) * model.modes[n].decay_per_s;
+  }
+  std::sort(score.begin(), score.end(), [](auto& a, auto& b) { return a.first > b.first; });
+  for (std::size_t i = 0; i < score.size() && i < 5; ++i) loc.worst_modes.push_back(score[i].second);
+  return loc;
+}
+
+std::vector<GapMap> maps_of(const AuditData& data, const AuditModel& model) {
+  std::vector<GapMap> maps;
+  for (std::size_t s = 0; s < data.strike_count(); ++s) maps.push_back(strike_gap(model, data, s));
+  return maps;
+}
+
+}  // namespace
+
+AuditResult run_audit(const AuditData& data, const std::optional<ModalModel>& given, const AuditOptions& options) {
+  if (data.strike_count() < 2)
+    throw AuditError("an audit needs at least 2 strikes of the object (support_damping and contact_duration "
+                     "compare strikes, and the gap is checked on held-out strikes); got " +
+                     std::to_string(data.strike_count()));
+  if (data.tracks.empty()) throw AuditError("no mode recurs in at least half of the strikes: are they the same object?");
+  AuditResult result;
+  result.metric = kGapMetric;
+  result.strikes = data.strike_count();
+  Recipe recipe;
+  if (given) recipe.given = baseline_from_model(*given, data);
+  const std::vector<Effect> catalog = effect_catalog();
+  AuditModel current;
+  double gap = in_sample_gap(data, recipe, &current);
+  double cv = cross_validated_gap(data, recipe);
+  result.baseline = current;
+  result.modes = current.modes.size();
+  result.gap_before_db = gap;
+  result.cv_gap_before_db = cv;
+  for (const Effect& e : catalog)
+    if (data.strike_count() < e.min_strikes)
+      result.untested.push_back(e.name + " needs at least " + std::to_string(e.min_strikes) + " strikes");
+  while (result.named.size() < options.max_effects) {
+    std::vector<Candidate> round;
+    const Effect* best = nullptr;
+    double best_improvement = 0.0, best_cv = cv;
+    Detection best_detection;
+    for (const Effect& e : catalog) {
+      if (std::find(recipe.effects.begin(), recipe.effects.end(), &e) != recipe.effects.end()) continue;
+      bool named_before = false;
+      for (const NamedEffect& n : result.named) named_before |= n.effect == e.name;
+      if (named_before) continue;
+      Candidate c;
+      c.effect = e.name;
+      if (data.strike_count() < e.min_strikes) {
+        c.note = "needs at least " + std::to_string(e.min_strikes) + " strikes";
+        round.push_back(c);
+        continue;
+      }
+      c.tested = true;
+      const Detection det = e.detect(data, current);
+      c.statistic = det.statistic;
+      c.detector_passes = det.passes;
+      c.note = det.evidence;
+      if (det.passes) {
+        Recipe with = recipe;
+        with.effects.push_back(&e);
+        c.cv_gap_db = cross_validated_gap(data, with);
+        c.improvement_db = cv - c.cv_gap_db - e.penalty_db;
+        if (c.improvement_db > best_improvement) {
+          best_improvement = c.improvement_db;
+          best = &e;
+          best_cv = c.cv_gap_db;
+          best_detection = det;
+        }
+      }
+      round.push_back(c);
+    }
+    result.rounds.push_back(round);
+    if (!best) break;
+    recipe.effects.push_back(best);
+    AuditModel next;
+    const double next_gap = in_sample_gap(data, recipe, &next);
+    result.named.push_back({best->name, gap, next_gap, cv - best_cv, best->parameters(data, next), best_detection.evidence});
+    gap = next_gap;
+    cv = best_cv;
+    current = std::move(next);
+  }
+  result.final_model = current;
+  result.gap_after_db = gap;
+  result.cv_gap_after_db = cv;
+  result.before = maps_of(data, result.baseline);
+  result.after = maps_of(data, result.final_model);
+  result.residuals_before = mode_residuals(data, result.baseline);
+  result.residuals_after = mode_residuals(data, result.final_model);
+  result.location = locate(data, result.baseline, result.before);
+  for (double g : result.baseline.gain) result.strike_gain_db.push_back(20.0 * std::log10(std::max(g, 1e-12)));
+  std::vector<double> spreads;
+  for (const ModeTrack& t : data.tracks) {
+    double lo = 1e300, hi = 0.0;
+    for (const TrackObservation& o : t.strikes)
+      if (o.present) { lo = std::min(lo, o.decay_per_s); hi = std::max(hi, o.decay_per_s); }
+    if (hi > 0 && t.presence() >= 2) spreads.push_back((hi - lo) / lo);
+  }
+  result.decay_spread = median(spreads);
+  return result;
+}
+
+}  // namespace ms::audit

@@ -1,0 +1,83 @@
+// The model audit (issue 6): compare a model with recordings of one object, locate the gap, name
+// the missing effects one at a time (detector + cross-validated improvement with a complexity
+// penalty), and show the gap before and after. See README "Auditing a model".
+#pragma once
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/audit/audit_model.hpp"
+#include "analysis/audit/cross_validation.hpp"
+#include "analysis/audit/effect_catalog.hpp"
+#include "analysis/audit/strikes.hpp"
+
+namespace ms::audit {
+
+struct AuditOptions {
+  StrikeOptions strikes;
+  MatchOptions matching;
+  std::size_t max_effects = 3;
+};
+
+struct NamedEffect {
+  std::string effect;
+  double gap_before_db = 0.0, gap_after_db = 0.0;  // in-sample, before and after adding it
+  double cv_improvement_db = 0.0;                   // held-out gap improvement (before the penalty)
+  Parameters parameters;
+  std::string evidence;
+};
+
+struct Candidate {
+  std::string effect;
+  bool tested = false;            // false: not enough strikes
+  std::string note;               // why not tested / detector evidence
+  double statistic = 0.0;
+  bool detector_passes = false;
+  double cv_gap_db = 0.0;         // held-out gap with the effect (when the detector passed)
+  double improvement_db = 0.0;    // held-out improvement minus the penalty
+};
+
+// Per-mode residuals of one strike against a model: measured - model (relative freq, relative decay, dB).
+struct ModeResidual {
+  std::size_t strike = 0;
+  double freq_hz = 0.0;
+  double freq_rel = 0.0, decay_rel = 0.0, amp_db = 0.0;
+};
+
+// Where the gap sits (of the baseline).
+struct GapLocation {
+  std::vector<double> strike_gap_db;  // per strike
+  std::vector<double> band_gap_db;    // per Bark band, over strikes and frames
+  std::vector<double> time_gap_db;    // per frame, over strikes and bands
+  std::vector<std::size_t> worst_modes;  // indices into the baseline's modes, largest |residual| first (up to 5)
+};
+
+struct AuditResult {
+  std::string metric;
+  std::size_t strikes = 0, modes = 0;
+  double gap_before_db = 0.0, gap_after_db = 0.0;
+  double cv_gap_before_db = 0.0, cv_gap_after_db = 0.0;
+  std::vector<NamedEffect> named;
+  std::vector<std::vector<Candidate>> rounds;
+  std::vector<std::string> untested;  // effects that need more strikes than given, with the reason
+  AuditModel baseline, final_model;
+  std::vector<GapMap> before, after;  // per strike
+  std::vector<ModeResidual> residuals_before, residuals_after;
+  GapLocation location;
+  std::vector<double> strike_gain_db;  // strike-to-strike variation of the strike strength
+  double decay_spread = 0.0;           // median relative spread of a mode's decay across strikes
+};
+
+// The measured strikes and their mode tracks (throws AuditError on bad input).
+AuditData make_audit_data(const std::vector<Recording>& recordings, const AuditOptions& options = {});
+
+// Runs the audit. `given`: a parameter set's model as the baseline (throws AuditError when its
+// modes do not match the recordings).
+AuditResult run_audit(const AuditData& data, const std::optional<ModalModel>& given = std::nullopt,
+                      const AuditOptions& options = {});
+
+// Per-mode residuals of every strike against a fitted model.
+std::vector<ModeResidual> mode_residuals(const AuditData& data, const AuditModel& model);
+
+}  // namespace ms::audit

@@ -1,0 +1,131 @@
+#include "analysis/audit/audit_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "synthesis/excitation.hpp"
+#include "synthesis/resonator_bank.hpp"
+
+namespace ms::audit {
+
+std::vector<std::size_t> all_strikes(const AuditData& data) {
+  std::vector<std::size_t> s(data.strike_count());
+  for (std::size_t i = 0; i < s.size(); ++i) s[i] = i;
+  return s;
+}
+
+double strike_decay(const AuditModel& model, std::size_t s, std::size_t n) {
+  double d = model.modes[n].decay_per_s;
+  if (!model.extra_decay_per_s.empty()) d += model.extra_decay_per_s[s][n];
+  return d;
+}
+
+double contact_gain(double contact_s, double decay_per_s, double freq_hz) {
+  if (contact_s <= 0.0) return 1.0;
+  // Closed form of contact_factor for the raised cosine (the fits call this ~10^6 times):
+  // G = (1 - e^{-p tau}) w0^2 / (tau p (p^2 + w0^2)), p = -d + i omega, w0 = 2 pi / tau.
+  const std::complex<double> p(-decay_per_s, 2.0 * M_PI * freq_hz);
+  const double w0 = 2.0 * M_PI / contact_s;
+  const std::complex<double> den = contact_s * p * (p * p + w0 * w0);
+  if (std::abs(den) < 1e-12 * w0 * w0 * w0 * contact_s) {  // p = +-i w0: the removable singularity
+    Excitation e;
+    e.shape = PulseShape::raised_cosine;
+    e.contact_s = contact_s;
+    return std::abs(contact_factor(e, decay_per_s, freq_hz));
+  }
+  return std::abs((1.0 - std::exp(-p * contact_s)) * w0 * w0 / den);
+}
+
+ModalModel strike_model(const AuditModel& model, std::size_t s) {
+  ModalModel out;
+  const double tau = model.contact_s.empty() ? 0.0 : model.contact_s[s];
+  Excitation e;
+  e.shape = PulseShape::raised_cosine;
+  e.contact_s = tau;
+  for (std::size_t n = 0; n < model.modes.size(); ++n) {
+    const AuditMode& m = model.modes[n];
+    const double d = strike_decay(model, s, n);
+    double amp = m.amp * model.gain[s], phase = 0.0;
+    if (tau > 0.0) {
+      const std::complex<double> g = contact_factor(e, d, m.freq_hz);
+      amp *= std::abs(g);
+      phase = std::arg(g);
+    }
+    if (m.split_hz > 0.0) {
+      // Keep the pair's energy equal to the merged mode's (tracks merge members by energy).
+      const double norm = std::hypot(1.0 - m.balance, m.balance);
+      out.modes.push_back({m.freq_hz - 0.5 * m.split_hz, d, amp * (1.0 - m.balance) / norm, phase});
+      out.modes.push_back({m.freq_hz + 0.5 * m.split_hz, d, amp * m.balance / norm, phase});
+    } else {
+      out.modes.push_back({m.freq_hz, d, amp, phase});
+    }
+  }
+  return out;
+}
+
+BarkSpectrogram predict_spectrogram(const AuditModel& model, const AuditData& data, std::size_t s) {
+  const MeasuredStrikes& ms_ = data.measured;
+  ModalModel modal = strike_model(model, s);
+  drop_modes_at_or_above(modal, 0.5 * ms_.sample_rate_hz);
+  Excitation impulse;  // the contact is already folded into amplitudes and phases
+  const std::size_t samples = ms_.strikes[s].samples.size();
+  const std::vector<float> y = render_bank(modal, impulse, ms_.sample_rate_hz, samples);
+  BarkSpectrogram spec = bark_spectrogram(y, ms_.grid);
+  if (!model.noise_band_power.empty())
+    for (std::size_t f = 0; f < spec.frames; ++f)
+      for (std::size_t b = 0; b < spec.bands; ++b) spec.at(f, b) += model.noise_band_power[b];
+  return spec;
+}
+
+GapMap strike_gap(const AuditModel& model, const AuditData& data, std::size_t s) {
+  return gap_map(data.measured.strikes[s].spectrogram, predict_spectrogram(model, data, s));
+}
+
+double mean_gap(const AuditModel& model, const AuditData& data, const std::vector<std::size_t>& strikes) {
+  const std::vector<std::size_t> which = strikes.empty() ? all_strikes(data) : strikes;
+  double sum = 0.0;
+  for (std::size_t s : which) sum += strike_gap(model, data, s).gap_db;
+  return which.empty() ? 0.0 : sum / double(which.size());
+}
+
+double strike_variation(const MeasuredStrikes& measured) {
+  const auto energy = [](const BarkSpectrogram& b) {
+    double e = 0.0;
+    for (double p : b.power) e += p;
+    return e;
+  };
+  std::size_t ref = 0;
+  for (std::size_t s = 0; s < measured.strikes.size(); ++s)
+    if (energy(measured.strikes[s].spectrogram) > energy(measured.strikes[ref].spectrogram)) ref = s;
+  const BarkSpectrogram& r = measured.strikes[ref].spectrogram;
+  double sum = 0.0;
+  for (std::size_t s = 0; s < measured.strikes.size(); ++s) {
+    if (s == ref) continue;
+    BarkSpectrogram scaled = r;
+    const double k = energy(measured.strikes[s].spectrogram) / std::max(energy(r), 1e-300);
+    for (double& p : scaled.power) p *= k;
+    sum += gap_map(measured.strikes[s].spectrogram, scaled).gap_db;
+  }
+  return measured.strikes.size() > 1 ? sum / double(measured.strikes.size() - 1) : 0.0;
+}
+
+void fit_gain(AuditModel& model, const AuditData& data, std::size_t s) {
+  std::vector<double> ratios;
+  const double tau = model.contact_s.empty() ? 0.0 : model.contact_s[s];
+  for (std::size_t n = 0; n < model.modes.size(); ++n) {
+    const AuditMode& m = model.modes[n];
+    if (m.track < 0 || m.amp <= 0.0) continue;
+    const TrackObservation& o = data.tracks[std::size_t(m.track)].strikes[s];
+    if (!o.present) continue;
+    const double g = contact_gain(tau, strike_decay(model, s, n), m.freq_hz);
+    ratios.push_back(std::log(o.amp / (m.amp * g)));
+  }
+  if (ratios.empty()) {
+    model.gain[s] = 1.0;
+    return;
+  }
+  std::nth_element(ratios.begin(), ratios.begin() + std::ptrdiff_t(ratios.size() / 2), ratios.end());
+  model.gain[s] = std::exp(ratios[ratios.size() / 2]);
+}
+
+}  // namespace ms::audit

@@ -1,0 +1,80 @@
+// The model an audit compares with the recordings: modes (each tied to a measured track or not), a
+// damping law, a gain per strike, and the extensions the named effects add (per-strike support
+// damping, per-strike contact durations, doublet splits, a stationary noise floor).
+#pragma once
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "analysis/audit/gap_metric.hpp"
+#include "analysis/audit/mode_matching.hpp"
+#include "analysis/audit/strikes.hpp"
+#include "synthesis/damping_law.hpp"
+#include "synthesis/modal_model.hpp"
+
+namespace ms::audit {
+
+struct AuditMode {
+  double freq_hz = 0.0;
+  double decay_per_s = 0.0;
+  double amp = 0.0;         // shape amplitude A_n (strike gain 1, ideal impulse)
+  int track = -1;           // measured track it stands for (-1: none)
+  double split_hz = 0.0;    // mode_doublet: f -+ split/2
+  double balance = 0.5;     // share of the amplitude in the upper mode of the doublet
+};
+
+struct AuditModel {
+  std::vector<AuditMode> modes;
+  DampingLaw law;                        // law the decays follow (when fitted from the recordings)
+  bool law_fitted = true;                // false: decays come from a given parameter set
+  std::vector<double> gain;              // per strike
+  std::vector<std::vector<double>> extra_decay_per_s;  // support_damping: [strike][mode]
+  double support_mean_per_s = 0.0;       // mean excess decay (for strikes with no measurement)
+  std::vector<double> contact_s;         // contact_duration: per strike (empty: ideal impulse)
+  double contact_ref_s = 0.0;            // ... tau_s = contact_ref_s (gain_s / contact_gain_ref)^-contact_exponent
+  double contact_gain_ref = 1.0;
+  double contact_exponent = 0.0;
+  std::vector<double> noise_band_power;  // noise_floor: per Bark band (empty: none)
+  std::vector<std::string> effects;      // named, in order
+};
+
+// Everything one audit looks at.
+struct AuditData {
+  MeasuredStrikes measured;
+  std::vector<ModeTrack> tracks;
+  // Strike-to-strike variation: mean over strikes of the gap between the strike and the loudest
+  // strike scaled to its energy (dB). Strikes differing only in gain give ~0: then no effect that
+  // lives in the differences between strikes (support_damping, contact_duration) can be named.
+  double strike_variation_db = 0.0;
+  std::size_t strike_count() const { return measured.strikes.size(); }
+};
+
+// 0 .. strike_count - 1 (every strike, e.g. as the training set of an in-sample fit).
+std::vector<std::size_t> all_strikes(const AuditData& data);
+
+// The modes that sound in strike s (gain, extra decay, contact factor, doublets applied).
+ModalModel strike_model(const AuditModel& model, std::size_t strike);
+
+// Decay of mode n in strike s (law or given decay plus support excess).
+double strike_decay(const AuditModel& model, std::size_t strike, std::size_t mode);
+
+// Bark spectrogram the model predicts for strike s (rendered on the data's grid, plus noise power).
+BarkSpectrogram predict_spectrogram(const AuditModel& model, const AuditData& data, std::size_t strike);
+
+// Gap of strike s between the model and the measurement.
+GapMap strike_gap(const AuditModel& model, const AuditData& data, std::size_t strike);
+
+// Mean gap over the given strikes (all when empty).
+double mean_gap(const AuditModel& model, const AuditData& data, const std::vector<std::size_t>& strikes = {});
+
+// The strike_variation_db of a set of strikes.
+double strike_variation(const MeasuredStrikes& measured);
+
+// Per-strike gain from the strike's own measured track amplitudes (median log ratio against the
+// model's amplitudes, contact factor included): the one latent every model has.
+void fit_gain(AuditModel& model, const AuditData& data, std::size_t strike);
+
+// |contact factor| of a raised-cosine contact of duration tau on a mode (1 for tau = 0).
+double contact_gain(double contact_s, double decay_per_s, double freq_hz);
+
+}  // namespace ms::audit

@@ -1,0 +1,178 @@
+#include "analysis/audit/baseline_fit.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace ms::audit {
+
+namespace {
+
+// Weighted least squares of c = a1 + a2 x with weights 1/c^2, a1, a2 >= 0; returns the SSE.
+double fit_linear_relative(const std::vector<double>& x, const std::vector<double>& c, double& a1, double& a2) {
+  double sw = 0, sx = 0, sxx = 0, sy = 0, sxy = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const double w = 1.0 / (c[i] * c[i]);
+    sw += w; sx += w * x[i]; sxx += w * x[i] * x[i]; sy += w * c[i]; sxy += w * x[i] * c[i];
+  }
+  const double det = sw * sxx - sx * sx;
+  a1 = det != 0.0 ? (sxx * sy - sx * sxy) / det : sy / sw;
+  a2 = det != 0.0 ? (sw * sxy - sx * sy) / det : 0.0;
+  if (a1 < 0.0) { a1 = 0.0; a2 = sxx > 0 ? sxy / sxx : 0.0; }
+  if (a2 < 0.0) { a2 = 0.0; a1 = sy / sw; }
+  double sse = 0.0;
+  for (std::size_t i = 0; i < x.size(); ++i) sse += std::pow((c[i] - a1 - a2 * x[i]) / c[i], 2);
+  return sse;
+}
+
+}  // namespace
+
+DampingLaw fit_law_relative(const std::vector<DampingPoint>& points, DampingKind kind) {
+  std::vector<double> lambda, c;
+  for (const DampingPoint& p : points) {
+    lambda.push_back(p.lambda_rad2_s2);
+    c.push_back(std::max(p.c_per_s, 1e-6));
+  }
+  DampingLaw best;
+  best.kind = DampingKind::rayleigh;
+  if (points.empty()) return best;
+  // Scale lambda so the normal equations are well conditioned.
+  const double scale = *std::max_element(lambda.begin(), lambda.end());
+  auto fit_at = [&](double a3, DampingLaw& law) {
+    std::vector<double> x(lambda.size());
+    for (std::size_t i = 0; i < x.size(); ++i) x[i] = std::pow(lambda[i] / scale, a3);
+    double a1 = 0, a2 = 0;
+    const double sse = fit_linear_relative(x, c, a1, a2);
+    law.alpha1 = a1;
+    law.alpha2 = a2 / std::pow(scale, a3);
+    law.alpha3 = a3;
+    return sse;
+  };
+  if (kind == DampingKind::rayleigh) {
+    fit_at(1.0, best);
+    best.alpha3 = 1.0;
+    return best;
+  }
+  best.kind = DampingKind::hybrid;
+  double best_sse = 1e300;
+  for (int k = 30; k <= 180; ++k) {
+    DampingLaw law;
+    law.kind = DampingKind::hybrid;
+    const double sse = fit_at(0.01 * k, law);
+    if (sse < best_sse) { best_sse = sse; best = law; }
+  }
+  return best;
+}
+
+double rms_log_residual(const std::vector<DampingPoint>& points, const std::vector<double>& model_c) {
+  double s = 0.0;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    s += std::pow(std::log(std::max(model_c[i], 1e-9) / std::max(points[i].c_per_s, 1e-9)), 2);
+  return points.empty() ? 0.0 : std::sqrt(s / double(points.size()));
+}
+
+std::vector<DampingPoint> track_points(const AuditData& data, const std::vector<std::size_t>& strikes) {
+  std::vector<DampingPoint> pts;
+  for (const ModeTrack& t : data.tracks)
+    for (std::size_t s : strikes)
+      if (t.strikes[s].present) pts.push_back(damping_point(t.strikes[s].freq_hz, t.strikes[s].decay_per_s));
+  return pts;
+}
+
+std::vector<DampingPoint> track_median_points(const AuditData& data, const std::vector<std::size_t>& strikes,
+                                              std::vector<std::size_t>* track_index) {
+  std::vector<DampingPoint> pts;
+  for (std::size_t n = 0; n < data.tracks.size(); ++n) {
+    std::vector<double> d;
+    for (std::size_t s : strikes)
+      if (data.tracks[n].strikes[s].present) d.push_back(data.tracks[n].strikes[s].decay_per_s);
+    if (d.empty()) continue;
+    std::sort(d.begin(), d.end());
+    const double med = d.size() % 2 ? d[d.size() / 2] : 0.5 * (d[d.size() / 2 - 1] + d[d.size() / 2]);
+    pts.push_back(damping_point(data.tracks[n].freq_hz, med));
+    if (track_index) track_index->push_back(n);
+  }
+  return pts;
+}
+
+void apply_law(AuditModel& model) {
+  for (AuditMode& m : model.modes) {
+    if (m.track < 0) continue;
+    const double omega = 2.0 * M_PI * m.freq_hz;
+    m.decay_per_s = std::max(1e-3, model.law.decay_per_s(omega * omega));
+  }
+}
+
+void fit_amplitudes(AuditModel& model, const AuditData& data, const std::vector<std::size_t>& strikes) {
+  for (int round = 0; round < 3; ++round) {
+    for (std::size_t n = 0; n < model.modes.size(); ++n) {
+      AuditMode& m = model.modes[n];
+      if (m.track < 0) continue;
+      double sum = 0.0;
+      int count = 0;
+      for (std::size_t s : strikes) {
+        const TrackObservation& o = data.tracks[std::size_t(m.track)].strikes[s];
+        if (!o.present) continue;
+        const double tau = model.contact_s.empty() ? 0.0 : model.contact_s[s];
+        sum += std::log(o.amp / (model.gain[s] * contact_gain(tau, strike_decay(model, s, n), m.freq_hz)));
+        ++count;
+      }
+      if (count > 0) m.amp = std::exp(sum / count);
+    }
+    for (std::size_t s : strikes) fit_gain(model, data, s);
+  }
+}
+
+AuditModel fit_baseline(const AuditData& data, const std::vector<std::size_t>& strikes_in) {
+  const std::vector<std::size_t> strikes = strikes_in.empty() ? all_strikes(data) : strikes_in;
+  AuditModel model;
+  model.gain.assign(data.strike_count(), 1.0);
+  for (std::size_t n = 0; n < data.tracks.size(); ++n) {
+    AuditMode m;
+    m.freq_hz = data.tracks[n].freq_hz;
+    m.track = int(n);
+    model.modes.push_back(m);
+  }
+  model.law = fit_law_relative(track_median_points(data, strikes), DampingKind::rayleigh);  // medians: robust to one odd strike
+  apply_law(model);
+  fit_amplitudes(model, data, strikes);
+  return model;
+}
+
+AuditModel baseline_from_model(const ModalModel& given, const AuditData& data) {
+  AuditModel model;
+  model.law_fitted = false;
+  model.gain.assign(data.strike_count(), 1.0);
+  double matched_energy = 0.0, total_energy = 0.0;
+  std::vector<bool> used(data.tracks.size(), false);
+  for (const Mode& g : given.modes) {
+    AuditMode m;
+    m.freq_hz = g.freq_hz;
+    m.decay_per_s = g.decay_per_s;
+    m.amp = g.amp;
+    double best = 0.01;
+    for (std::size_t n = 0; n < data.tracks.size(); ++n) {
+      const double rel = std::abs(data.tracks[n].freq_hz - g.freq_hz) / g.freq_hz;
+      if (rel < best && !used[n]) { best = rel; m.track = int(n); }
+    }
+    if (m.track >= 0) used[std::size_t(m.track)] = true;
+    model.modes.push_back(m);
+  }
+  for (std::size_t n = 0; n < data.tracks.size(); ++n)
+    for (const TrackObservation& o : data.tracks[n].strikes) {
+      total_energy += o.amp * o.amp;
+      if (used[n]) matched_energy += o.amp * o.amp;
+    }
+  if (total_energy <= 0.0 || matched_energy < 0.5 * total_energy) {
+    std::ostringstream msg;
+    msg.precision(2);
+    msg << "the model's modes do not match the recordings: they account for "
+        << std::fixed << 100.0 * (total_energy > 0 ? matched_energy / total_energy : 0.0)
+        << " % of the measured modal energy (modes within 1 % in frequency); is it the same object?";
+    throw AuditError(msg.str());
+  }
+  for (std::size_t s = 0; s < data.strike_count(); ++s) fit_gain(model, data, s);
+  return model;
+}
+
+}  // namespace ms::audit

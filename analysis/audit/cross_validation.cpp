@@ -1,0 +1,48 @@
+#include "analysis/audit/cross_validation.hpp"
+
+#include "analysis/audit/baseline_fit.hpp"
+
+namespace ms::audit {
+
+void adapt_strike(const AuditData& data, const Recipe& recipe, AuditModel& model, std::size_t s) {
+  fit_gain(model, data, s);
+  for (const Effect* e : recipe.effects)
+    if (e->adapt) e->adapt(data, model, s);
+  fit_gain(model, data, s);
+}
+
+AuditModel fit_recipe(const AuditData& data, const Recipe& recipe, const std::vector<std::size_t>& train) {
+  AuditModel model = recipe.given ? *recipe.given : fit_baseline(data, train);
+  for (std::size_t i = 0; i < recipe.effects.size(); ++i) {
+    recipe.effects[i]->extend(data, model, train);
+    const Recipe so_far{recipe.given, {recipe.effects.begin(), recipe.effects.begin() + std::ptrdiff_t(i + 1)}};
+    for (std::size_t s : train) adapt_strike(data, so_far, model, s);
+  }
+  model.effects.clear();
+  for (const Effect* e : recipe.effects) model.effects.push_back(e->name);
+  return model;
+}
+
+double cross_validated_gap(const AuditData& data, const Recipe& recipe) {
+  const std::size_t n = data.strike_count();
+  if (n < 2) return in_sample_gap(data, recipe);
+  double sum = 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    std::vector<std::size_t> train;
+    for (std::size_t s = 0; s < n; ++s)
+      if (s != k) train.push_back(s);
+    AuditModel model = fit_recipe(data, recipe, train);
+    adapt_strike(data, recipe, model, k);
+    sum += strike_gap(model, data, k).gap_db;
+  }
+  return sum / double(n);
+}
+
+double in_sample_gap(const AuditData& data, const Recipe& recipe, AuditModel* fitted) {
+  AuditModel model = fit_recipe(data, recipe, all_strikes(data));
+  const double gap = mean_gap(model, data);
+  if (fitted) *fitted = std::move(model);
+  return gap;
+}
+
+}  // namespace ms::audit

@@ -1,0 +1,31 @@
+// Fitting a model recipe (baseline + named effects) on some strikes and scoring it on held-out ones:
+// leave-one-strike-out, the held-out strike contributing only its latent values (gain, and the
+// per-strike values an effect declares), so an effect must predict the rest to lower the gap.
+#pragma once
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "analysis/audit/audit_model.hpp"
+#include "analysis/audit/effect_catalog.hpp"
+
+namespace ms::audit {
+
+struct Recipe {
+  std::optional<AuditModel> given;        // a parameter set's baseline (else: fitted from the recordings)
+  std::vector<const Effect*> effects;     // in the order named
+};
+
+// Baseline fitted on `train`, each effect extended on `train` in order, latent values of the train strikes.
+AuditModel fit_recipe(const AuditData& data, const Recipe& recipe, const std::vector<std::size_t>& train);
+
+// The latent values of strike s (gain, then each effect's, then the gain again).
+void adapt_strike(const AuditData& data, const Recipe& recipe, AuditModel& model, std::size_t strike);
+
+// Mean held-out gap (dB) over leave-one-strike-out folds; with a single strike the in-sample gap.
+double cross_validated_gap(const AuditData& data, const Recipe& recipe);
+
+// In-sample: fitted on every strike, mean gap over every strike.
+double in_sample_gap(const AuditData& data, const Recipe& recipe, AuditModel* fitted = nullptr);
+
+}  // namespace ms::audit

@@ -1,0 +1,55 @@
+// The catalog of effects an audit can name. Each effect has a detector (a statistic computed on all
+// strikes against the current model, with a threshold chosen on the tuning seeds), a model
+// extension fitted on training strikes, and the per-strike latent values it estimates on a held-out
+// strike (beyond the strike gain every model has).
+#pragma once
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "analysis/audit/audit_model.hpp"
+
+namespace ms::audit {
+
+struct Detection {
+  bool passes = false;
+  double statistic = 0.0;
+  std::string evidence;   // one sentence
+};
+
+using Parameters = std::vector<std::pair<std::string, double>>;
+
+struct Effect {
+  std::string name;
+  std::size_t min_strikes = 1;  // fewer strikes: the effect cannot be tested
+  double penalty_db = 0.0;      // complexity penalty on the cross-validated gap improvement
+  Detection (*detect)(const AuditData& data, const AuditModel& current) = nullptr;
+  void (*extend)(const AuditData& data, AuditModel& model, const std::vector<std::size_t>& train) = nullptr;
+  void (*adapt)(const AuditData& data, AuditModel& model, std::size_t strike) = nullptr;  // may be null
+  Parameters (*parameters)(const AuditData& data, const AuditModel& model) = nullptr;
+};
+
+Effect support_damping_effect();
+Effect damping_law_effect();
+Effect mode_doublet_effect();
+Effect contact_duration_effect();
+Effect noise_floor_effect();
+
+// Every effect, in a fixed order (ties in improvement go to the earlier one).
+std::vector<Effect> effect_catalog();
+const Effect* find_effect(const std::vector<Effect>& catalog, const std::string& name);
+
+// Strikes that differ by less than this (AuditData::strike_variation_db) differ only in gain.
+constexpr double kMinStrikeVariationDb = 0.1;  // tuning seeds: clean 0.00, weakest hidden 0.29 dB
+
+// Helpers the effects share.
+std::vector<std::size_t> strikes_present(const ModeTrack& track);
+double median(std::vector<double> v);
+
+}  // namespace ms::audit
+
+namespace ms::audit {
+// White-noise standard deviation with the noise_floor extension's total power (full scale 1).
+double noise_white_sigma(const AuditData& data, const AuditModel& model);
+}  // namespace ms::audit

@@ -1,0 +1,104 @@
+#include "analysis/audit/gap_metric.hpp"
+
+#include <fftw3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "synthesis/bark.hpp"
+
+namespace ms::audit {
+
+double level_db(double power) { return power > 0.0 ? 10.0 * std::log10(power) : -400.0; }
+
+double SpectrogramGrid::frame_time_s(std::size_t frame) const {
+  return (double(frame * hop) + 0.5 * double(window)) / sample_rate_hz;
+}
+
+double SpectrogramGrid::band_centre_hz(std::size_t band) const {
+  // invert Zwicker-Terhardt by bisection (monotone)
+  const double z = double(band) + 0.5;
+  double lo = 0.0, hi = 0.5 * sample_rate_hz;
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (bark_zwicker_terhardt(mid) < z ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+SpectrogramGrid make_grid(double fs, std::size_t samples) {
+  SpectrogramGrid g;
+  g.sample_rate_hz = fs;
+  g.window = 256;
+  while (double(g.window) < 0.023 * fs) g.window *= 2;  // ~23 ms: 43 Hz bins resolve the first Bark band
+  g.hop = g.window / 2;
+  g.frames = samples >= g.window ? 1 + (samples - g.window) / g.hop : 0;
+  const std::size_t bins = g.window / 2 + 1;
+  g.bin_band.assign(bins, -1);
+  int max_band = 0;
+  for (std::size_t k = 1; k < bins; ++k) {
+    const int b = int(std::floor(bark_zwicker_terhardt(double(k) * fs / double(g.window))));
+    g.bin_band[k] = b;
+    max_band = std::max(max_band, b);
+  }
+  g.bands = std::size_t(max_band) + 1;
+  g.band_bins.assign(g.bands, 0);
+  for (std::size_t k = 1; k < bins; ++k) ++g.band_bins[std::size_t(g.bin_band[k])];
+  g.window_energy = 0.0;
+  for (std::size_t i = 0; i < g.window; ++i) {
+    const double w = 0.5 - 0.5 * std::cos(2.0 * M_PI * double(i) / double(g.window));
+    g.window_energy += w * w;
+  }
+  return g;
+}
+
+BarkSpectrogram bark_spectrogram(const std::vector<float>& x, const SpectrogramGrid& g) {
+  BarkSpectrogram s;
+  s.frames = g.frames;
+  s.bands = g.bands;
+  s.power.assign(g.frames * g.bands, 0.0);
+  if (g.frames == 0) return s;
+  const std::size_t bins = g.window / 2 + 1;
+  double* in = fftw_alloc_real(g.window);
+  fftw_complex* out = fftw_alloc_complex(bins);
+  fftw_plan plan = fftw_plan_dft_r2c_1d(int(g.window), in, out, FFTW_ESTIMATE);
+  std::vector<double> w(g.window);
+  for (std::size_t i = 0; i < g.window; ++i) w[i] = 0.5 - 0.5 * std::cos(2.0 * M_PI * double(i) / double(g.window));
+  for (std::size_t f = 0; f < g.frames; ++f) {
+    const std::size_t start = f * g.hop;
+    for (std::size_t i = 0; i < g.window; ++i)
+      in[i] = start + i < x.size() ? w[i] * double(x[start + i]) : 0.0;
+    fftw_execute(plan);
+    double* row = &s.power[f * g.bands];
+    for (std::size_t k = 1; k < bins; ++k)
+      row[std::size_t(g.bin_band[k])] += out[k][0] * out[k][0] + out[k][1] * out[k][1];
+  }
+  fftw_destroy_plan(plan);
+  fftw_free(out);
+  fftw_free(in);
+  return s;
+}
+
+GapMap gap_map(const BarkSpectrogram& measured, const BarkSpectrogram& model, double floor_db) {
+  GapMap m;
+  m.frames = measured.frames;
+  m.bands = measured.bands;
+  m.diff_db.assign(measured.power.size(), std::numeric_limits<double>::quiet_NaN());
+  double peak = -400.0;
+  for (double p : measured.power) peak = std::max(peak, level_db(p));
+  const double floor = peak - floor_db;
+  double sum = 0.0;
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < measured.power.size() && i < model.power.size(); ++i) {
+    const double a = std::max(level_db(measured.power[i]), floor), b = std::max(level_db(model.power[i]), floor);
+    if (a <= floor && b <= floor) continue;
+    m.diff_db[i] = b - a;
+    sum += std::abs(b - a);
+    ++count;
+  }
+  m.gap_db = count > 0 ? sum / double(count) : 0.0;
+  return m;
+}
+
+}  // namespace ms::audit

@@ -1,0 +1,64 @@
+#include "analysis/audit/mode_matching.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ms::audit {
+
+std::size_t ModeTrack::presence() const {
+  return std::size_t(std::count_if(strikes.begin(), strikes.end(), [](const auto& o) { return o.present; }));
+}
+
+std::vector<ModeTrack> match_modes(const std::vector<std::vector<Mode>>& per_strike, const MatchOptions& options) {
+  struct Item {
+    double freq_hz;
+    std::size_t strike;
+    Mode mode;
+  };
+  std::vector<Item> all;
+  for (std::size_t s = 0; s < per_strike.size(); ++s)
+    for (const Mode& m : per_strike[s]) all.push_back({m.freq_hz, s, m});
+  std::sort(all.begin(), all.end(), [](const Item& a, const Item& b) { return a.freq_hz < b.freq_hz; });
+  std::vector<ModeTrack> tracks;
+  const std::size_t strikes = per_strike.size();
+  const std::size_t need = std::max<std::size_t>(1, std::size_t(std::ceil(options.min_presence * double(strikes) - 1e-9)));
+  std::size_t i = 0;
+  while (i < all.size()) {
+    // Grow a cluster while the next mode lies within the tolerance of the previous one.
+    std::size_t j = i + 1;
+    while (j < all.size()) {
+      const double f = all[j - 1].freq_hz;
+      if (all[j].freq_hz - f > std::max(options.merge_rel * f, options.merge_hz)) break;
+      ++j;
+    }
+    ModeTrack t;
+    t.strikes.assign(strikes, {});
+    for (std::size_t k = i; k < j; ++k) t.strikes[all[k].strike].members.push_back(all[k].mode);
+    std::vector<double> freqs;
+    for (TrackObservation& o : t.strikes) {
+      if (o.members.empty()) continue;
+      double e = 0.0, fe = 0.0, de = 0.0;
+      for (const Mode& m : o.members) {
+        const double w = m.amp * m.amp;
+        e += w;
+        fe += w * m.freq_hz;
+        de += w * m.decay_per_s;
+      }
+      o.present = e > 0.0;
+      if (!o.present) continue;
+      o.freq_hz = fe / e;
+      o.decay_per_s = de / e;
+      o.amp = std::sqrt(e);
+      freqs.push_back(o.freq_hz);
+    }
+    if (freqs.size() >= need) {
+      std::sort(freqs.begin(), freqs.end());
+      t.freq_hz = freqs[freqs.size() / 2];
+      tracks.push_back(std::move(t));
+    }
+    i = j;
+  }
+  return tracks;
+}
+
+}  // namespace ms::audit

@@ -1,0 +1,43 @@
+#include "analysis/audit/strikes.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ms::audit {
+
+MeasuredStrikes prepare_strikes(const std::vector<Recording>& recordings, const StrikeOptions& options) {
+  if (recordings.empty()) throw AuditError("no recordings to audit");
+  MeasuredStrikes out;
+  out.sample_rate_hz = recordings.front().sample_rate_hz;
+  for (const Recording& r : recordings)
+    if (r.sample_rate_hz != out.sample_rate_hz)
+      throw AuditError(r.name + ": sample rate " + std::to_string(std::lround(r.sample_rate_hz)) + " Hz differs from " +
+                       recordings.front().name + "'s " + std::to_string(std::lround(out.sample_rate_hz)) +
+                       " Hz; resample the recordings to one rate first");
+  ExtractOptions extract;
+  extract.skip_contact_s = options.skip_contact_s;
+  extract.max_dynamic_range_db = options.dynamic_range_db;
+  std::size_t common = std::size_t(options.max_duration_s * out.sample_rate_hz);
+  for (const Recording& r : recordings) {
+    if (auto problem = recording_problem(r.samples, r.sample_rate_hz)) throw AuditError(r.name + ": " + *problem);
+    Strike s;
+    s.name = r.name;
+    s.features = extract_features(r.samples, r.sample_rate_hz, extract);
+    if (s.features.modes.empty()) throw AuditError(r.name + ": no modes stand above the noise floor (silence?)");
+    const std::size_t onset = std::size_t(std::lround(s.features.onset_s * r.sample_rate_hz));
+    s.samples.assign(r.samples.begin() + std::ptrdiff_t(std::min(onset, r.samples.size())), r.samples.end());
+    common = std::min(common, s.samples.size());
+    out.strikes.push_back(std::move(s));
+  }
+  if (double(common) < options.min_duration_s * out.sample_rate_hz)
+    throw AuditError("recordings last less than " + std::to_string(options.min_duration_s) +
+                     " s after the strike; an audit needs the decay");
+  out.grid = make_grid(out.sample_rate_hz, common);
+  for (Strike& s : out.strikes) {
+    s.samples.resize(common);
+    s.spectrogram = bark_spectrogram(s.samples, out.grid);
+  }
+  return out;
+}
+
+}  // namespace ms::audit

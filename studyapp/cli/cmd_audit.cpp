@@ -1,0 +1,240 @@
+// modalstudy audit --measured WAV... [--model PARAMSET.yaml] [--report DIR] [--json]
+// Compares a model with recordings of one object, names the effects the model is missing and shows
+// the gap shrink (analysis/audit/audit.hpp; README "Auditing a model").
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+
+#include "analysis/audit/audit.hpp"
+#include "analysis/audit/augmented_paramset.hpp"
+#include "studyapp/cli/commands.hpp"
+#include "studyapp/plots/plots.hpp"
+#include "synthesis/atomic_file.hpp"
+#include "synthesis/audio_file.hpp"
+#include "synthesis/input_error.hpp"
+#include "synthesis/paramset.hpp"
+#include "synthesis/stimulus.hpp"
+
+namespace ms::cli {
+
+namespace {
+
+using audit::AuditResult;
+
+nlohmann::json result_json(const AuditResult& r, const audit::AuditData& data) {
+  nlohmann::json named = nlohmann::json::array();
+  for (const auto& n : r.named) {
+    nlohmann::json params = nlohmann::json::object();
+    for (const auto& [k, v] : n.parameters) params[k] = v;
+    named.push_back({{"effect", n.effect},
+                     {"gap_before", n.gap_before_db},
+                     {"gap_after", n.gap_after_db},
+                     {"cv_improvement", n.cv_improvement_db},
+                     {"parameters", params},
+                     {"evidence", n.evidence}});
+  }
+  nlohmann::json candidates = nlohmann::json::array();
+  if (!r.rounds.empty())
+    for (const auto& c : r.rounds.front())
+      candidates.push_back({{"effect", c.effect}, {"tested", c.tested}, {"statistic", c.statistic},
+                            {"detector_passes", c.detector_passes}, {"cv_gap", c.cv_gap_db},
+                            {"improvement", c.improvement_db}, {"note", c.note}});
+  const audit::SpectrogramGrid& g = data.measured.grid;
+  nlohmann::json strikes = nlohmann::json::array();
+  for (std::size_t s = 0; s < r.strikes; ++s)
+    strikes.push_back({{"strike", data.measured.strikes[s].name}, {"gap_before", r.location.strike_gap_db[s]},
+                       {"gap_after", r.after[s].gap_db}, {"gain_db", r.strike_gain_db[s]}});
+  // The three worst Bark bands and the worst 100 ms span of the baseline.
+  std::vector<std::size_t> bands(r.location.band_gap_db.size());
+  for (std::size_t b = 0; b < bands.size(); ++b) bands[b] = b;
+  std::sort(bands.begin(), bands.end(), [&](auto a, auto b) { return r.location.band_gap_db[a] > r.location.band_gap_db[b]; });
+  nlohmann::json worst_bands = nlohmann::json::array();
+  for (std::size_t i = 0; i < bands.size() && i < 3; ++i)
+    worst_bands.push_back({{"bark", bands[i]}, {"centre_hz", std::round(g.band_centre_hz(bands[i]))},
+                           {"gap", r.location.band_gap_db[bands[i]]}});
+  std::size_t worst_frame = 0;
+  for (std::size_t f = 0; f < r.location.time_gap_db.size(); ++f)
+    if (r.location.time_gap_db[f] > r.location.time_gap_db[worst_frame]) worst_frame = f;
+  nlohmann::json worst_modes = nlohmann::json::array();
+  for (std::size_t n : r.location.worst_modes) worst_modes.push_back(std::round(r.baseline.modes[n].freq_hz * 10) / 10);
+  // Per-mode residuals of the baseline, per strike (measured - model).
+  nlohmann::json residuals = nlohmann::json::array();
+  for (const auto& m : r.residuals_before)
+    residuals.push_back({{"strike", data.measured.strikes[m.strike].name}, {"freq_hz", m.freq_hz},
+                         {"freq_rel", m.freq_rel}, {"decay_rel", m.decay_rel}, {"amp_db", m.amp_db}});
+  nlohmann::json untested = r.untested;
+  return {{"metric", r.metric},
+          {"gap_before", r.gap_before_db},
+          {"gap_after", r.gap_after_db},
+          {"cv_gap_before", r.cv_gap_before_db},
+          {"cv_gap_after", r.cv_gap_after_db},
+          {"strikes", r.strikes},
+          {"modes", r.modes},
+          {"named_effects", named},
+          {"first_round", candidates},
+          {"locate", {{"strikes", strikes},
+                      {"worst_bands", worst_bands},
+                      {"worst_time_s", g.frame_time_s(worst_frame)},
+                      {"worst_modes_hz", worst_modes},
+                      {"decay_spread", r.decay_spread},
+                      {"strike_variation_db", data.strike_variation_db},
+                      {"mode_residuals", residuals}}},
+          {"untested", untested}};
+}
+
+// Mean signed difference over strikes per (band, frame); NaN where no strike has a value.
+std::vector<std::vector<double>> mean_map(const std::vector<audit::GapMap>& maps) {
+  const std::size_t bands = maps.front().bands, frames = maps.front().frames;
+  std::vector<std::vector<double>> out(bands, std::vector<double>(frames, NAN));
+  for (std::size_t b = 0; b < bands; ++b)
+    for (std::size_t f = 0; f < frames; ++f) {
+      double sum = 0.0;
+      int n = 0;
+      for (const auto& m : maps)
+        if (!std::isnan(m.diff_db[f * bands + b])) { sum += m.diff_db[f * bands + b]; ++n; }
+      if (n > 0) out[b][f] = sum / n;
+    }
+  return out;
+}
+
+std::vector<plots::XY> law_curve(const DampingLaw& law, double lo, double hi) {
+  std::vector<plots::XY> pts;
+  for (int k = 0; k <= 60; ++k) {
+    const double lambda = lo * std::pow(hi / lo, k / 60.0);
+    pts.push_back({lambda, 2.0 * law.decay_per_s(lambda)});
+  }
+  return pts;
+}
+
+void write_report(const std::string& dir, const AuditResult& r, const audit::AuditData& data,
+                  const nlohmann::json& json) {
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path d(dir);
+  const double duration = double(data.measured.strikes.front().samples.size()) / data.measured.sample_rate_hz;
+  plots::PlotOptions o;
+  o.width_px = 900;
+  o.height_px = 500;
+  char title[200];
+  std::snprintf(title, sizeof title, "Residual, baseline (model - measured, mean over strikes): gap %.2f dB", r.gap_before_db);
+  o.title = title;
+  plots::residual_map((d / "residual_before.png").string(), mean_map(r.before), duration, 20.0, o);
+  std::snprintf(title, sizeof title, "Residual, with the named effects: gap %.2f dB", r.gap_after_db);
+  o.title = title;
+  plots::residual_map((d / "residual_after.png").string(), mean_map(r.after), duration, 20.0, o);
+  // Per-mode residuals: amplitude (dB) and decay (%) against frequency, before and after.
+  auto series = [](const std::vector<audit::ModeResidual>& res, bool amp, const std::string& name) {
+    plots::Series s{name, {}};
+    for (const auto& x : res) s.points.push_back({x.freq_hz, amp ? x.amp_db : 100.0 * x.decay_rel});
+    std::sort(s.points.begin(), s.points.end(), [](auto& a, auto& b) { return a.x < b.x; });
+    return s;
+  };
+  o.title = "Per-mode amplitude residual (measured - model), every strike";
+  o.x_label = "frequency [Hz]";
+  o.y_label = "amplitude residual [dB]";
+  plots::line_plot((d / "mode_amplitude_residuals.png").string(),
+                   {series(r.residuals_before, true, "baseline"), series(r.residuals_after, true, "with effects")}, o, true);
+  o.title = "Per-mode decay residual (measured - model), every strike";
+  o.y_label = "decay residual [%]";
+  plots::line_plot((d / "mode_decay_residuals.png").string(),
+                   {series(r.residuals_before, false, "baseline"), series(r.residuals_after, false, "with effects")}, o, true);
+  // (lambda, c) scatter with the baseline's and the final model's laws.
+  std::vector<double> lambda, c;
+  for (const auto& t : data.tracks)
+    for (const auto& ob : t.strikes)
+      if (ob.present) {
+        lambda.push_back(std::pow(2.0 * M_PI * ob.freq_hz, 2) + ob.decay_per_s * ob.decay_per_s);
+        c.push_back(2.0 * ob.decay_per_s);
+      }
+  const double lo = *std::min_element(lambda.begin(), lambda.end()), hi = *std::max_element(lambda.begin(), lambda.end());
+  std::vector<plots::Series> laws;
+  if (r.baseline.law_fitted) laws.push_back({"baseline (Rayleigh)", law_curve(r.baseline.law, lo, hi)});
+  if (r.final_model.law_fitted && !r.named.empty()) laws.push_back({"with effects", law_curve(r.final_model.law, lo, hi)});
+  o = plots::PlotOptions{};
+  o.title = "Damping: measured (lambda, c = 2d) and the laws";
+  plots::damping_scatter((d / "damping.png").string(), lambda, c, laws, o, true);
+  std::string effects;
+  for (const auto& n : r.named) effects += (effects.empty() ? "" : ", ") + n.effect;
+  const std::string yaml = audit::augmented_paramset_yaml(
+      data, r.final_model,
+      "modalstudy audit: the plain model fitted to " + std::to_string(r.strikes) + " strikes" +
+          (effects.empty() ? "" : " + " + effects) + "; renders strike " +
+          data.measured.strikes[audit::representative_strike(r.final_model)].name);
+  write_file_atomically((d / "model.yaml").string(), yaml);
+  write_file_atomically((d / "audit.json").string(), json.dump(2) + "\n");
+}
+
+}  // namespace
+
+void register_audit(CLI::App& app) {
+  struct Options {
+    std::vector<std::string> measured;
+    std::string model, report;
+    bool json = false;
+    double max_duration_s = 2.0;
+    double skip_contact_ms = 0.5;
+  };
+  auto opt = std::make_shared<Options>();
+  CLI::App* cmd = app.add_subcommand("audit", "Find where a model and recordings disagree and name the missing effect");
+  cmd->add_option("--measured", opt->measured, "Recordings of one object, one strike each (WAV/FLAC/AIFF)")
+      ->required()->expected(1, -1);
+  cmd->add_option("--model", opt->model, "Parameter set to audit (default: the plain model fitted to the recordings)");
+  cmd->add_option("--report", opt->report, "Write pictures, audit.json and model.yaml (the improved model) here");
+  cmd->add_option("--max-duration-s", opt->max_duration_s, "Analysed span after each onset (default 2)")
+      ->check(CLI::Range(0.3, 30.0));
+  cmd->add_option("--skip-contact-ms", opt->skip_contact_ms, "As for extract (default 0.5)")->check(CLI::Range(0.0, 20.0));
+  cmd->add_flag("--json", opt->json, "Print one JSON object");
+  cmd->callback([opt] {
+    std::optional<ParamSet> given;
+    if (!opt->model.empty()) given = load_paramset(opt->model);
+    if (!opt->report.empty() && std::filesystem::exists(opt->report) && !std::filesystem::is_directory(opt->report))
+      throw InputError(SourceLocation{opt->report, 0, 0}, "--report must be a folder");
+    std::vector<audit::Recording> recordings;
+    for (const std::string& path : opt->measured) {
+      const Audio a = read_audio(path);
+      recordings.push_back({path, a.sample_rate_hz, mono(a)});
+    }
+    audit::AuditOptions options;
+    options.strikes.max_duration_s = opt->max_duration_s;
+    options.strikes.skip_contact_s = opt->skip_contact_ms * 1e-3;
+    try {
+      const audit::AuditData data = audit::make_audit_data(recordings, options);
+      std::optional<ModalModel> model;
+      if (given) {
+        if (given->sample_rate_hz != data.measured.sample_rate_hz)
+          throw audit::AuditError(opt->model + ": sample rate " + std::to_string(std::lround(given->sample_rate_hz)) +
+                                  " Hz differs from the recordings' " +
+                                  std::to_string(std::lround(data.measured.sample_rate_hz)) + " Hz");
+        std::vector<std::string> warnings;
+        model = audible_model(*given, warnings);
+        // The audit's modes are what sounds after the strike: fold the set's contact and gain in.
+        for (Mode& m : model->modes)
+          m.amp *= given->excitation.gain * std::abs(contact_factor(given->excitation, m.decay_per_s, m.freq_hz));
+      }
+      const AuditResult r = audit::run_audit(data, model, options);
+      const nlohmann::json j = result_json(r, data);
+      if (!opt->report.empty()) write_report(opt->report, r, data, j);
+      if (opt->json) {
+        std::cout << j.dump() << "\n";
+        return;
+      }
+      std::printf("%zu strikes, %zu modes; gap (%s)\n", r.strikes, r.modes, r.metric.c_str());
+      std::printf("baseline: %.2f dB (held-out %.2f dB)\n", r.gap_before_db, r.cv_gap_before_db);
+      if (r.named.empty()) std::printf("nothing named: no effect in the catalog lowers the held-out gap enough\n");
+      for (const auto& n : r.named) {
+        std::printf("+ %-17s gap %.2f -> %.2f dB: %s\n", n.effect.c_str(), n.gap_before_db, n.gap_after_db, n.evidence.c_str());
+        for (const auto& [k, v] : n.parameters) std::printf("    %s = %.4g\n", k.c_str(), v);
+      }
+      std::printf("final: %.2f dB (held-out %.2f dB)\n", r.gap_after_db, r.cv_gap_after_db);
+      for (const auto& u : r.untested) std::printf("not tested: %s\n", u.c_str());
+      if (!opt->report.empty()) std::printf("report: %s\n", opt->report.c_str());
+    } catch (const audit::AuditError& e) {
+      throw InputError(std::string("audit: ") + e.what());
+    }
+  });
+}
+
+}  // namespace ms::cli

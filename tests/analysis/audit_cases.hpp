@@ -1,0 +1,108 @@
+// Hidden-effect cases for the audit tests: which effects a seed hides, with what strength, and the
+// bookkeeping of what the audit named (confusion matrix, detection rates, gap shrink).
+//  - tuning: seeds 1000-1059, strengths on the grid {0.1, 0.3, 0.5, 0.7, 0.9}; the detector
+//    thresholds in analysis/audit/effect_*.cpp were chosen on these (DISABLED_AuditTuning prints them);
+//  - test:   seeds 5000-5119, strengths drawn uniformly from (0, 1) off that grid (disjoint).
+#pragma once
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <map>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "analysis/audit/audit.hpp"
+#include "analysis/audit/hidden_effect_generator.hpp"
+
+namespace ms::test {
+
+struct CasePlan {
+  std::uint64_t seed = 0;
+  std::vector<std::string> effects;
+  std::vector<double> strengths;
+};
+
+// Case i of a run: every 8 cases, 2 clean, 5 with one effect each, 1 with a random pair.
+inline CasePlan plan_case(std::uint64_t seed, std::size_t i, bool grid_strengths) {
+  const std::vector<std::string> all = audit::hideable_effects();
+  std::mt19937_64 rng(seed * 7919u + 17u);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  auto strength = [&] {
+    if (grid_strengths) return 0.1 + 0.2 * double(rng() % 5);
+    double u = U(rng);
+    for (double g : {0.1, 0.3, 0.5, 0.7, 0.9})
+      if (std::abs(u - g) < 1e-9) u += 0.01;  // keep off the tuning grid
+    return u;
+  };
+  CasePlan p;
+  p.seed = seed;
+  const std::size_t k = i % 8;
+  if (k >= 2 && k <= 6) {
+    p.effects = {all[k - 2]};
+    p.strengths = {strength()};
+  } else if (k == 7) {
+    const std::size_t a = rng() % all.size();
+    std::size_t b = rng() % (all.size() - 1);
+    if (b >= a) ++b;
+    p.effects = {all[a], all[b]};
+    p.strengths = {strength(), strength()};
+  }
+  return p;
+}
+
+struct Tally {
+  std::vector<std::string> labels;  // effects + "none"
+  std::map<std::string, std::map<std::string, int>> confusion;  // hidden -> named -> count
+  std::map<std::string, int> hidden, hit;
+  int clean = 0, clean_quiet = 0;
+  int with_effect = 0, shrunk = 0;
+  std::vector<double> shrink;
+
+  void add(const CasePlan& plan, const audit::AuditResult& r) {
+    std::vector<std::string> named;
+    for (const auto& n : r.named) named.push_back(n.effect);
+    const std::vector<std::string> hidden_list = plan.effects.empty() ? std::vector<std::string>{"none"} : plan.effects;
+    const std::vector<std::string> named_list = named.empty() ? std::vector<std::string>{"none"} : named;
+    for (const auto& h : hidden_list)
+      for (const auto& n : named_list) confusion[h][n] += 1;
+    if (plan.effects.empty()) {
+      ++clean;
+      clean_quiet += named.empty();
+      return;
+    }
+    for (const auto& h : plan.effects) {
+      ++hidden[h];
+      for (const auto& n : named) hit[h] += n == h;
+    }
+    ++with_effect;
+    const double s = r.gap_before_db > 0 ? 1.0 - r.gap_after_db / r.gap_before_db : 0.0;
+    shrink.push_back(s);
+    shrunk += s >= 0.5;
+  }
+
+  void print() const {
+    std::vector<std::string> cols = audit::hideable_effects();
+    cols.push_back("none");
+    std::printf("confusion (rows: hidden, columns: named; a case with two effects counts in both rows)\n%-17s", "");
+    for (const auto& c : cols) std::printf("%17s", c.c_str());
+    std::printf("\n");
+    for (const auto& r : cols) {
+      std::printf("%-17s", r.c_str());
+      for (const auto& c : cols) {
+        const auto it = confusion.find(r);
+        int v = 0;
+        if (it != confusion.end() && it->second.count(c)) v = it->second.at(c);
+        std::printf("%17d", v);
+      }
+      std::printf("\n");
+    }
+    for (const auto& [e, n] : hidden)
+      std::printf("%-17s named in %d of %d cases where hidden (%.0f %%)\n", e.c_str(), hit.count(e) ? hit.at(e) : 0, n,
+                  100.0 * (hit.count(e) ? hit.at(e) : 0) / n);
+    std::printf("clean: nothing named in %d of %d (%.0f %%)\n", clean_quiet, clean, clean ? 100.0 * clean_quiet / clean : 0.0);
+    std::printf("gap shrinks by >= 50 %% in %d of %d cases with an effect\n", shrunk, with_effect);
+  }
+};
+
+}  // namespace ms::test

@@ -1,0 +1,142 @@
+// The audit's parts against closed forms: the gap metric, mode matching, the relative law fit, the
+// baseline on clean strikes, and the augmented parameter set rendering what the model predicts.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "analysis/audit/audit.hpp"
+#include "analysis/audit/augmented_paramset.hpp"
+#include "analysis/audit/baseline_fit.hpp"
+#include "analysis/audit/gap_metric.hpp"
+#include "analysis/audit/hidden_effect_generator.hpp"
+#include "analysis/audit/mode_matching.hpp"
+#include "synthesis/excitation.hpp"
+#include "synthesis/paramset.hpp"
+#include "synthesis/stimulus.hpp"
+
+namespace ms::audit {
+namespace {
+
+TEST(AuditGap, SineBandPowerIsParsevals) {
+  const double fs = 44100, a = 0.5, f = 1000.0;
+  std::vector<float> x(44100);
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] = float(a * std::sin(2 * M_PI * f * double(i) / fs));
+  const SpectrogramGrid g = make_grid(fs, x.size());
+  EXPECT_EQ(g.window, 1024u);
+  EXPECT_EQ(g.hop, 512u);
+  EXPECT_EQ(g.frames, 1 + (44100 - 1024) / 512);
+  const BarkSpectrogram s = bark_spectrogram(x, g);
+  // One-sided Parseval: sum_k |X_k|^2 = N a^2 sum w^2 / 4 for a sinusoid well inside the band.
+  const std::size_t band = std::size_t(std::floor(8.5105));  // 1 kHz is 8.51 Bark
+  double total = 0.0;
+  for (std::size_t b = 0; b < s.bands; ++b) total += s.at(10, b);
+  EXPECT_NEAR(s.at(10, band) / total, 1.0, 1e-3);
+  EXPECT_NEAR(total, double(g.window) * a * a * g.window_energy / 4.0, 1e-3 * total);
+}
+
+TEST(AuditGap, DoubleAmplitudeIsSixDecibels) {
+  std::mt19937_64 rng(3);
+  std::normal_distribution<double> N(0, 0.1);
+  std::vector<float> x(22050), y(22050);
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    x[i] = float(N(rng));
+    y[i] = 2.0f * x[i];
+  }
+  const SpectrogramGrid g = make_grid(44100, x.size());
+  const BarkSpectrogram a = bark_spectrogram(x, g), b = bark_spectrogram(y, g);
+  EXPECT_NEAR(gap_map(a, a).gap_db, 0.0, 1e-12);
+  const GapMap m = gap_map(a, b);
+  EXPECT_NEAR(m.gap_db, 20.0 * std::log10(2.0), 1e-9);
+  EXPECT_NEAR(m.diff_db[5 * m.bands + 10], 6.0206, 1e-3);
+  // Model silent: every cell sits on the floor for the model, the gap is the measured level above it.
+  const BarkSpectrogram z = bark_spectrogram(std::vector<float>(x.size(), 0.0f), g);
+  const GapMap silent = gap_map(a, z);
+  EXPECT_GT(silent.gap_db, 20.0);
+  EXPECT_LE(silent.gap_db, kGapFloorDb);
+}
+
+TEST(AuditMatching, MergesCloseModesAndDropsRareOnes) {
+  const std::vector<std::vector<Mode>> strikes = {
+      {{440.0, 3, 1.0, 0}, {442.0, 3, 0.8, 0}, {1000, 5, 0.5, 0}, {3000, 9, 0.1, 0}},
+      {{440.2, 3, 0.9, 0}, {1000.5, 5, 0.4, 0}},
+      {{439.9, 3, 1.1, 0}, {999.8, 5, 0.6, 0}, {2000, 7, 0.2, 0}}};
+  const auto tracks = match_modes(strikes);
+  ASSERT_EQ(tracks.size(), 2u);  // 2000 and 3000 Hz appear once in three strikes
+  EXPECT_NEAR(tracks[0].freq_hz, 440.0, 0.5);
+  EXPECT_EQ(tracks[0].strikes[0].members.size(), 2u);
+  EXPECT_NEAR(tracks[0].strikes[0].amp, std::hypot(1.0, 0.8), 1e-12);
+  EXPECT_NEAR(tracks[0].strikes[0].freq_hz, (440.0 * 1.0 + 442.0 * 0.64) / 1.64, 1e-9);
+  EXPECT_EQ(tracks[1].presence(), 3u);
+}
+
+TEST(AuditLawFit, RecoversRayleighAndHybridExactly) {
+  std::vector<DampingPoint> r, h;
+  for (double f : {200.0, 500.0, 900.0, 1500.0, 2500.0, 4000.0, 6500.0}) {
+    const double lambda = std::pow(2 * M_PI * f, 2);
+    r.push_back({lambda, 3.0 + 2e-8 * lambda});
+    h.push_back({lambda, 2.0 + 4e-6 * std::pow(lambda, 0.7)});
+  }
+  const DampingLaw lr = fit_law_relative(r, DampingKind::rayleigh);
+  EXPECT_NEAR(lr.alpha1, 3.0, 1e-9);
+  EXPECT_NEAR(lr.alpha2, 2e-8, 1e-17);
+  const DampingLaw lh = fit_law_relative(h, DampingKind::hybrid);
+  EXPECT_NEAR(lh.alpha3, 0.7, 1e-9);
+  EXPECT_NEAR(lh.alpha1, 2.0, 1e-6);
+  std::vector<double> c;
+  for (const auto& p : h) c.push_back(2.0 * lh.decay_per_s(p.lambda_rad2_s2));
+  EXPECT_LT(rms_log_residual(h, c), 1e-9);
+}
+
+TEST(AuditBaseline, CleanStrikesAreExplainedAndTheModelRendersFromYaml) {
+  const HiddenCase hc = generate_hidden_case(77, {}, {});
+  const AuditData data = make_audit_data(hc.recordings);
+  const AuditResult r = run_audit(data);
+  EXPECT_TRUE(r.named.empty());
+  EXPECT_LT(r.gap_before_db, 1.5);
+  // Gains: the fitted strike gains follow the generator's up to one common factor.
+  const double k = r.baseline.gain[0] / hc.strike_gain[0];
+  for (std::size_t s = 1; s < hc.strike_gain.size(); ++s) EXPECT_NEAR(r.baseline.gain[s] / hc.strike_gain[s] / k, 1.0, 0.05);
+  // The parameter set loads with the ordinary reader and renders the hardest strike within the gap.
+  const std::string yaml = augmented_paramset_yaml(data, r.final_model, "test");
+  const ParamSet p = parse_paramset(yaml, "model.yaml", ".");
+  const RenderedStimulus out = render_stimulus(p);
+  const std::size_t s = representative_strike(r.final_model);
+  const BarkSpectrogram spec = bark_spectrogram(out.audio.samples, data.measured.grid);
+  EXPECT_NEAR(gap_map(data.measured.strikes[s].spectrogram, spec).gap_db, r.after[s].gap_db, 0.05);
+}
+
+TEST(AuditBaseline, NamedEffectsRenderFromYaml) {
+  const HiddenCase hc = generate_hidden_case(91, {"support_damping", "noise_floor"}, {0.6, 0.8});
+  const AuditData data = make_audit_data(hc.recordings);
+  const AuditResult r = run_audit(data);
+  ASSERT_FALSE(r.named.empty());
+  const std::string yaml = augmented_paramset_yaml(data, r.final_model, "test");
+  const ParamSet p = parse_paramset(yaml, "model.yaml", ".");
+  const std::size_t s = representative_strike(r.final_model);
+  const BarkSpectrogram spec = bark_spectrogram(render_stimulus(p).audio.samples, data.measured.grid);
+  // Rendered noise is one draw, the model's is its expectation: within 0.5 dB of the model's gap.
+  EXPECT_NEAR(gap_map(data.measured.strikes[s].spectrogram, spec).gap_db, r.after[s].gap_db, 0.5);
+  EXPECT_LT(r.gap_after_db, 0.5 * r.gap_before_db);
+}
+
+}  // namespace
+}  // namespace ms::audit
+
+namespace ms::audit {
+namespace {
+
+TEST(AuditContact, ClosedFormEqualsTheSynthesisersIntegral) {
+  Excitation e;
+  e.shape = PulseShape::raised_cosine;
+  for (double tau : {0.1e-3, 0.5e-3, 2e-3})
+    for (double f : {100.0, 900.0, 4000.0, 12000.0})
+      for (double d : {0.5, 30.0}) {
+        e.contact_s = tau;
+        EXPECT_NEAR(contact_gain(tau, d, f), std::abs(contact_factor(e, d, f)), 1e-9) << tau << " " << f;
+      }
+  EXPECT_EQ(contact_gain(0.0, 3.0, 1000.0), 1.0);
+}
+
+}  // namespace
+}  // namespace ms::audit

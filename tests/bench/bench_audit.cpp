@@ -1,0 +1,53 @@
+// Audit speed: 10 strikes x 2 s (the bar: <= 10 s), hidden support damping + noise floor, and
+// the parts: feature extraction of all strikes vs the audit proper. A reference variant runs the
+// cross-validation naively (every fold re-extracts the training strikes' features from audio).
+#include <benchmark/benchmark.h>
+
+#include "analysis/audit/audit.hpp"
+#include "analysis/audit/hidden_effect_generator.hpp"
+
+namespace {
+
+ms::audit::HiddenCase ten_strikes() {
+  ms::audit::GeneratorOptions g;
+  g.strikes = 10;
+  g.duration_s = 2.0;
+  return ms::audit::generate_hidden_case(4242, {"support_damping", "noise_floor"}, {0.5, 0.5}, g);
+}
+
+void BM_AuditTenStrikes(benchmark::State& state) {
+  const auto hc = ten_strikes();
+  for (auto _ : state) {
+    const auto data = ms::audit::make_audit_data(hc.recordings);
+    const auto r = ms::audit::run_audit(data);
+    benchmark::DoNotOptimize(r.gap_after_db);
+  }
+}
+BENCHMARK(BM_AuditTenStrikes)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+void BM_AuditTenStrikesExtractionOnly(benchmark::State& state) {
+  const auto hc = ten_strikes();
+  for (auto _ : state) benchmark::DoNotOptimize(ms::audit::make_audit_data(hc.recordings).tracks.size());
+}
+BENCHMARK(BM_AuditTenStrikesExtractionOnly)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+// Naive reference: each of the 10 leave-one-out folds of one candidate re-analyses its 9 training
+// recordings from the audio (what a script around `modalstudy extract` would do), once per candidate.
+void BM_AuditNaiveRefoldExtraction(benchmark::State& state) {
+  const auto hc = ten_strikes();
+  for (auto _ : state) {
+    double sum = 0.0;
+    for (std::size_t k = 0; k < hc.recordings.size(); ++k) {
+      std::vector<ms::audit::Recording> train;
+      for (std::size_t s = 0; s < hc.recordings.size(); ++s)
+        if (s != k) train.push_back(hc.recordings[s]);
+      sum += double(ms::audit::make_audit_data(train).tracks.size());
+    }
+    benchmark::DoNotOptimize(sum);
+  }
+}
+BENCHMARK(BM_AuditNaiveRefoldExtraction)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+}  // namespace
+
+BENCHMARK_MAIN();
