@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# Quick start 1: set up, build, render every shipped parameter set (stimuli/) into build/stimuli/,
-# and show where they are. Re-running renders only what changed.
+# Quick start 1 (the main job): set up and build; render every shipped parameter set into
+# build/stimuli/; run the demo study (protocols/demo.yaml) end to end — in the window when there is a
+# display, with the simulated listener (autopilot) when there is none — then export the results and
+# compute the statistics and pictures from them. Re-running renders only what changed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/setup.sh -DMODALSTUDY_WERROR=ON  # same configuration as test.sh: one build serves both
@@ -11,5 +13,33 @@ build/bin/modalstudy synth stimuli/plate/sterling-steel.yaml -o build/stimuli/st
   --set excitation.contact_s=0.002 --modes-out build/stimuli/steel-plate-modes.csv
 echo "== synthesis throughput on one core (4096 modes, 2 s)"
 build/bin/modalstudy bench synth --modes 4096 --seconds 2
+
+study=build/demo-study
+rm -rf "$study"
+mkdir -p "$study"
+echo "== the demo study: protocols/demo.yaml (every block type), checked"
+build/bin/modalstudy protocol check protocols/demo.yaml
+if [[ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" && -z "${MODALSTUDY_AUTOPILOT:-}" ]]; then
+  echo "== a display is available: the study opens in a window (participant 'you'; close it to go on)"
+  build/bin/studyapp protocols/demo.yaml --participant you --db "$study/results.sqlite" \
+    --cache build/stimulus-cache || echo "(window closed before the end: the session resumes next time)"
+fi
+echo "== four simulated participants answer every trial (headless autopilot)"
+for p in P01 P02 P03 P04; do
+  build/bin/studyapp protocols/demo.yaml --participant "$p" --db "$study/results.sqlite" \
+    --cache build/stimulus-cache --autopilot "${p#P}"
+done
+echo "== export: tidy CSV, one table per block type"
+build/bin/modalstudy export "$study/results.sqlite" -o "$study/export"
+echo "== MUSHRA summary (hidden reference 'full', anchors 'full~lp3500' and 'full~lp7000')"
+build/bin/modalstudy stats mushra "$study/export/mushra.csv" --reference full \
+  --anchor full~lp3500 --anchor full~lp7000 --plot "$study/mushra.png"
+echo "== identification: confusion matrix"
+build/bin/modalstudy stats confusion "$study/export/identify.csv" --truth stimulus --response response \
+  --plot "$study/confusion.png"
+echo "== staircase thresholds (a_v, dB), one track per participant"
+build/bin/modalstudy stats staircase "$study/export/staircase.csv" --level level --track participant \
+  --trial step
 echo
 echo "Stimuli: $(pwd)/build/stimuli/ (WAV files, manifest.json with SHA-256 and recipe hashes)"
+echo "Study:   $(pwd)/$study/ (results.sqlite, export/*.csv, mushra.png, confusion.png)"

@@ -17,17 +17,24 @@ void register_export(CLI::App& app) {
   };
   auto opt = std::make_shared<Options>();
   CLI::App* cmd = app.add_subcommand(
-      "export", "Export a results database: DIR/responses.csv (tidy, one row per response) and DIR/study.json");
+      "export", "Export a results database: DIR/responses.csv (tidy, one row per response), study.json, trials.csv "
+      "(stimulus hashes), events.csv and one tidy table per block type (mushra.csv, identify.csv, ...)");
   cmd->add_option("results", opt->db, "Results database (.sqlite) written by studyapp")->required();
   cmd->add_option("-o,--output", opt->out_dir, "Output folder (created if missing)")->required();
   cmd->add_flag("--json", opt->json, "Print one JSON object");
   cmd->callback([opt] {
     const ExportSummary s = export_results(opt->db, opt->out_dir);
     if (opt->json)
-      std::cout << nlohmann::json{{"responses", s.responses}, {"csv", s.csv_path}, {"study_json", s.json_path}}.dump()
+      std::cout << nlohmann::json{{"responses", s.responses}, {"csv", s.csv_path}, {"study_json", s.json_path},
+                                  {"tables", s.tables}}
+                       .dump()
                 << "\n";
-    else
+    else {
       std::printf("exported %zu responses to %s and %s\n", s.responses, s.csv_path.c_str(), s.json_path.c_str());
+      std::string tables;
+      for (const auto& t : s.tables) tables += " " + t;
+      std::printf("tidy tables:%s trials.csv events.csv\n", tables.c_str());
+    }
   });
 }
 

@@ -4,6 +4,9 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <vector>
+
+#include "synthesis/input_error.hpp"
 
 namespace ms {
 
@@ -25,7 +28,17 @@ struct AutopilotSummary {
   bool finished = false;
 };
 
-// Throws InputError (every protocol problem joined by newlines) if the protocol does not validate.
+// A protocol that does not validate: what() is the first problem (one line); problems() all of them.
+class InvalidProtocol : public InputError {
+ public:
+  explicit InvalidProtocol(std::vector<std::string> problems);
+  const std::vector<std::string>& problems() const { return problems_; }
+
+ private:
+  std::vector<std::string> problems_;
+};
+
+// Throws InvalidProtocol if the protocol does not validate, InputError for a stimulus that cannot be made.
 AutopilotSummary run_autopilot(const AutopilotOptions& options,
                                const std::function<void(const std::string&)>& log = {});
 

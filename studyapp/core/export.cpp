@@ -8,6 +8,7 @@
 #include <map>
 
 #include "studyapp/core/results_store.hpp"
+#include "studyapp/core/tidy_tables.hpp"
 #include "synthesis/atomic_file.hpp"
 #include "synthesis/input_error.hpp"
 
@@ -71,9 +72,7 @@ ExportSummary export_results(const std::string& db_path, const std::string& out_
 
   std::string csv = "study,participant,session,block,block_type,trial,stimuli,response,rt_ms,plays,timestamp\r\n";
   for (const ResponseRow& r : rows) {
-    // Opaque id unless the study allows personal fields: codes are often names or initials.
-    const std::string participant =
-        r.export_personal ? r.participant_code : "p" + std::to_string(r.participant);
+    const std::string participant = exported_participant(r.participant_code, r.participant, r.export_personal);
     const std::string cells[] = {r.study,
                                  participant,
                                  std::to_string(r.session),
@@ -93,6 +92,24 @@ ExportSummary export_results(const std::string& db_path, const std::string& out_
     }
     csv += "\r\n";  // RFC 4180 line ending
   }
+
+  // The schedule with the recipe hash of every stimulus, and every play/stop/switch/step event.
+  std::string trials_csv = csv_line({"study", "participant", "session", "block", "block_type", "trial", "stimuli",
+                                     "stimulus_hashes"});
+  for (const TrialRow& t : store.trial_rows()) {
+    std::string hashes;
+    for (const auto& h : nlohmann::json::parse(t.hashes_json)) hashes += (hashes.empty() ? "" : ";") + h.get<std::string>();
+    trials_csv += csv_line({t.study, exported_participant(t.participant_code, t.participant, t.export_personal),
+                            std::to_string(t.session), t.block_id, t.block_type, std::to_string(t.trial_index),
+                            stimuli_cell(t.stimuli_json), hashes});
+  }
+  std::string events_csv = csv_line({"study", "participant", "session", "block", "block_type", "trial", "event",
+                                     "stimulus", "stimulus_hash", "detail", "timestamp"});
+  for (const EventRow& e : store.event_rows())
+    events_csv += csv_line({e.study, exported_participant(e.participant_code, e.participant, e.export_personal),
+                            std::to_string(e.session), e.block_id, e.block_type, std::to_string(e.trial_index), e.kind,
+                            e.stimulus, e.stimulus_hash, e.detail_json, iso8601_utc(e.timestamp_ms)});
+  const auto tables = tidy_tables(rows);
 
   std::map<std::string, std::size_t> per_study;
   for (const ResponseRow& r : rows) ++per_study[r.study];
@@ -126,6 +143,12 @@ ExportSummary export_results(const std::string& db_path, const std::string& out_
   summary.json_path = (std::filesystem::path(out_dir) / "study.json").string();
   summary.responses = rows.size();
   write_file_atomically(summary.csv_path, csv);
+  write_file_atomically((std::filesystem::path(out_dir) / "trials.csv").string(), trials_csv);
+  write_file_atomically((std::filesystem::path(out_dir) / "events.csv").string(), events_csv);
+  for (const auto& [name, text] : tables) {
+    write_file_atomically((std::filesystem::path(out_dir) / name).string(), text);
+    summary.tables.push_back(name);
+  }
   write_file_atomically(summary.json_path, meta.dump(2) + "\n");
   return summary;
 }

@@ -4,15 +4,18 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace ms {
 
 struct ExportSummary {
   std::string csv_path, json_path;
   std::size_t responses = 0;
+  std::vector<std::string> tables;  // per-type tidy tables written (e.g. "mushra.csv")
 };
 
-// Reads `db_path` (read-only; never modified) and writes out_dir/responses.csv and out_dir/study.json.
+// Reads `db_path` (read-only; never modified) and writes out_dir/responses.csv, study.json, trials.csv
+// (stimulus recipe hashes), events.csv (play/stop/switch/step) and one tidy table per block type.
 // Throws ms::InputError naming the file for a missing file or one that is not a ModalStudy database;
 // then nothing is written. out_dir is created if missing.
 ExportSummary export_results(const std::string& db_path, const std::string& out_dir);

@@ -34,7 +34,7 @@ class PlaybackMixer {
   struct Command { int index = -1; bool restart = false; bool stop = false; };
   double sample_rate_hz_;
   std::size_t crossfade_frames_;
-  std::mutex stimuli_mutex_;                 // held by set_stimuli; render only try_locks it
+  mutable std::mutex stimuli_mutex_;         // held by set_stimuli; render only try_locks it
   std::vector<Samples> stimuli_;
   std::atomic<int> requested_{-1};           // pending command, applied at the next render
   std::atomic<bool> restart_{false}, stop_{false}, loop_{false}, playing_{false};

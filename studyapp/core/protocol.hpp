@@ -82,8 +82,11 @@ struct AdjustBlock {
   std::vector<Slider> sliders;
 };
 // Transformed up-down staircase (Levitt 1971). Default 2-down-1-up: converges on 70.7 % correct.
+// Each step plays the reference, then A and B in random order: one is the reference, the other the
+// stimulus with `parameter` at the track's level; the listener says which of A/B is the reference.
 struct StaircaseBlock {
   StimulusRef stimulus;
+  std::optional<StimulusRef> reference;  // default: `stimulus` as defined (without the level)
   std::string parameter;    // dotted parameter-set key, e.g. prune.threshold_db
   SourceLocation parameter_where;
   double start = 0.0, step = -1.0;
@@ -111,6 +114,7 @@ struct Block {
   bool training = false;
   int break_after = 0;         // trials between breaks; 0 = none
   int repeats = 1;
+  bool listen_all = true;      // mushra/rating: every sound must be played before answering
   BlockBody body;
 
   // Every stimulus the block names (for validation and scheduling).
@@ -127,6 +131,7 @@ struct Protocol {
   std::uint64_t seed = 0;
   Counterbalance counterbalance = Counterbalance::none;
   bool allow_outside = false;
+  bool export_personal = false;         // may participant codes leave the database on export?
   std::vector<StimulusSource> stimuli;  // in file order, implicit anchors appended
   std::vector<Block> blocks;
 

@@ -135,7 +135,7 @@ BlockBody parse_body(const YamlReader& r, const YAML::Node& n, const std::string
       return ab;
     }
     case BlockType::mushra: {
-      r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "reference",
+      r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "listen_all", "reference",
                           "conditions", "anchors"});
       MushraBlock m;
       if (n["reference"]) m.reference = ref(r, n["reference"], p + ".reference");
@@ -162,7 +162,7 @@ BlockBody parse_body(const YamlReader& r, const YAML::Node& n, const std::string
       return IdentifyBlock{refs(r, n["stimuli"], p + ".stimuli"), texts(r, n["labels"], p + ".labels")};
     }
     case BlockType::rating: {
-      r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "stimuli",
+      r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "listen_all", "stimuli",
                           "attributes"});
       RatingBlock rb;
       rb.stimuli = refs(r, n["stimuli"], p + ".stimuli");
@@ -198,9 +198,10 @@ BlockBody parse_body(const YamlReader& r, const YAML::Node& n, const std::string
     }
     case BlockType::staircase: {
       r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "stimulus",
-                          "parameter", "start", "step", "down_up", "reversals"});
+                          "reference", "parameter", "start", "step", "down_up", "reversals"});
       StaircaseBlock s;
       s.stimulus = ref(r, req("stimulus"), p + ".stimulus");
+      if (n["reference"]) s.reference = ref(r, n["reference"], p + ".reference");
       s.parameter = r.text(req("parameter"), p + ".parameter");
       s.parameter_where = r.where(n["parameter"], p + ".parameter");
       s.start = r.number(req("start"), p + ".start");
@@ -260,6 +261,7 @@ Block parse_block(const YamlReader& r, const YAML::Node& n, std::size_t index) {
   if (n["randomize"]) b.randomize = flag(r, n["randomize"], p + ".randomize");
   if (n["training"]) b.training = flag(r, n["training"], p + ".training");
   if (n["break_after"]) b.break_after = count(r, n["break_after"], p + ".break_after", 0, 100000);
+  if (n["listen_all"]) b.listen_all = flag(r, n["listen_all"], p + ".listen_all");
   if (n["repeats"]) b.repeats = count(r, n["repeats"], p + ".repeats", 1, 1000);
   if (b.type != BlockType::unknown) b.body = parse_body(r, n, p, b);
   return b;
@@ -276,7 +278,7 @@ Protocol parse_protocol(const std::string& yaml_text, const std::string& file_fo
   pr.base_dir = base_dir;
   if (!root.IsMap()) r.fail(root, "", "a protocol is a map with study, title, stimuli and blocks");
   r.check_keys(root, "", {"study", "title", "sample_rate", "seed", "counterbalance", "allow_outside",
-                          "stimuli", "blocks"});
+                          "export_personal", "stimuli", "blocks"});
   if (!root["study"]) r.fail(root, "", "missing 'study' (the study id)");
   pr.study = r.text(root["study"], "study");
   if (root["title"]) pr.title = r.text(root["title"], "title");
@@ -292,6 +294,7 @@ Protocol parse_protocol(const std::string& yaml_text, const std::string& file_fo
     else if (c != "none") r.fail(root["counterbalance"], "counterbalance", "expected none or latin_square, got '" + c + "'");
   }
   if (root["allow_outside"]) pr.allow_outside = flag(r, root["allow_outside"], "allow_outside");
+  if (root["export_personal"]) pr.export_personal = flag(r, root["export_personal"], "export_personal");
 
   // A bad stimulus or block is collected (with `problems`) so one run reports all of them.
   auto guarded = [&](auto&& fn) {

@@ -44,8 +44,8 @@ CREATE TABLE responses(
   FOREIGN KEY(session, block_index, trial_index) REFERENCES trials(session, block_index, trial_index));
 CREATE TABLE events(
   id INTEGER PRIMARY KEY, session INTEGER NOT NULL, block_index INTEGER NOT NULL, trial_index INTEGER NOT NULL,
-  kind TEXT NOT NULL CHECK(kind IN ('play', 'stop', 'switch')), stimulus TEXT NOT NULL,
-  timestamp_ms INTEGER NOT NULL,
+  kind TEXT NOT NULL CHECK(kind IN ('play', 'stop', 'switch', 'step')), stimulus TEXT NOT NULL,
+  timestamp_ms INTEGER NOT NULL, detail TEXT CHECK(detail IS NULL OR json_valid(detail)),
   FOREIGN KEY(session, block_index, trial_index) REFERENCES trials(session, block_index, trial_index));
 CREATE INDEX events_by_trial ON events(session, block_index, trial_index);
 )sql";
@@ -69,6 +69,20 @@ void check_header(const std::string& path) {
 
 std::string json_array(const std::vector<std::string>& items) { return nlohmann::json(items).dump(); }
 
+// The first nine columns of the export queries: study, participant id and code, export_personal,
+// session, block index, id and type, trial index.
+void read_context(const sqlite::Statement& q, TrialContext& row) {
+  row.study = q.column_text(0);
+  row.participant = q.column_int64(1);
+  row.participant_code = q.column_text(2);
+  row.export_personal = q.column_int64(3) != 0;
+  row.session = q.column_int64(4);
+  row.block_index = int(q.column_int64(5));
+  row.block_id = q.column_text(6);
+  row.block_type = q.column_text(7);
+  row.trial_index = int(q.column_int64(8));
+}
+
 }  // namespace
 
 std::string to_string(EventKind kind) {
@@ -76,6 +90,7 @@ std::string to_string(EventKind kind) {
     case EventKind::play: return "play";
     case EventKind::stop: return "stop";
     case EventKind::switch_to: return "switch";
+    case EventKind::step: return "step";
   }
   return "play";
 }
@@ -129,8 +144,8 @@ ResultsStore::ResultsStore(const std::string& path, Mode mode)
                              "INSERT INTO responses(session, block_index, trial_index, value, rt_ms, plays, timestamp) "
                              "VALUES (?, ?, ?, ?, ?, ?, ?)");
     insert_event_.emplace(db_,
-                          "INSERT INTO events(session, block_index, trial_index, kind, stimulus, timestamp_ms) "
-                          "VALUES (?, ?, ?, ?, ?, ?)");
+                          "INSERT INTO events(session, block_index, trial_index, kind, stimulus, timestamp_ms, "
+                          "detail) VALUES (?, ?, ?, ?, ?, ?, ?)");
   }
 }
 
@@ -205,6 +220,10 @@ void ResultsStore::record_event(std::int64_t session, const PlaybackEvent& e) {
   if (!insert_event_) throw sqlite::Error(path() + ": opened read-only", SQLITE_READONLY);
   insert_event_->bind(1, session).bind(2, e.trial.block_index).bind(3, e.trial.trial_index);
   insert_event_->bind(4, to_string(e.kind)).bind(5, e.stimulus).bind(6, e.timestamp_ms);
+  if (e.detail_json.empty())
+    insert_event_->bind_null(7);
+  else
+    insert_event_->bind(7, e.detail_json);
   try {
     insert_event_->run();
   } catch (...) {
@@ -221,6 +240,119 @@ std::optional<TrialPosition> ResultsStore::first_unanswered_trial(std::int64_t s
   q.bind(1, session);
   if (!q.step()) return std::nullopt;
   return TrialPosition{int(q.column_int64(0)), int(q.column_int64(1))};
+}
+
+std::optional<std::int64_t> ResultsStore::find_participant(const std::string& study_id,
+                                                           const std::string& code) const {
+  sqlite::Statement q(db_, "SELECT id FROM participants WHERE study = ? AND code = ?");
+  q.bind(1, study_id).bind(2, code);
+  if (!q.step()) return std::nullopt;
+  return q.column_int64(0);
+}
+
+std::optional<SessionRecord> ResultsStore::unfinished_session(std::int64_t participant) const {
+  sqlite::Statement q(db_,
+                      "SELECT id, participant, started, finished, schedule_seed FROM sessions "
+                      "WHERE participant = ? AND finished IS NULL ORDER BY id DESC LIMIT 1");
+  q.bind(1, participant);
+  if (!q.step()) return std::nullopt;
+  return SessionRecord{q.column_int64(0), q.column_int64(1), q.column_int64(2), std::nullopt,
+                       static_cast<std::uint64_t>(q.column_int64(4))};
+}
+
+std::vector<SessionSummary> ResultsStore::session_summaries() const {
+  sqlite::Statement q(db_,
+                      "SELECT p.study, p.code, s.id, s.started, s.finished, "
+                      "(SELECT count(*) FROM trials t WHERE t.session = s.id), "
+                      "(SELECT count(*) FROM responses r WHERE r.session = s.id) "
+                      "FROM sessions s JOIN participants p ON p.id = s.participant ORDER BY s.id");
+  std::vector<SessionSummary> out;
+  while (q.step()) {
+    SessionSummary row;
+    row.study = q.column_text(0);
+    row.participant_code = q.column_text(1);
+    row.session = q.column_int64(2);
+    row.started_ms = q.column_int64(3);
+    if (!q.is_null(4)) row.finished_ms = q.column_int64(4);
+    row.trials = q.column_int64(5);
+    row.responses = q.column_int64(6);
+    out.push_back(std::move(row));
+  }
+  return out;
+}
+
+std::vector<TrialPosition> ResultsStore::answered_trials(std::int64_t session) const {
+  sqlite::Statement q(db_, "SELECT block_index, trial_index FROM responses WHERE session = ?");
+  q.bind(1, session);
+  std::vector<TrialPosition> out;
+  while (q.step()) out.push_back({int(q.column_int64(0)), int(q.column_int64(1))});
+  return out;
+}
+
+std::vector<PlaybackEvent> ResultsStore::events(std::int64_t session, TrialPosition trial) const {
+  sqlite::Statement q(db_,
+                      "SELECT kind, stimulus, timestamp_ms, coalesce(detail, '') FROM events "
+                      "WHERE session = ? AND block_index = ? AND trial_index = ? ORDER BY id");
+  q.bind(1, session).bind(2, trial.block_index).bind(3, trial.trial_index);
+  std::vector<PlaybackEvent> out;
+  while (q.step()) {
+    const std::string kind = q.column_text(0);
+    PlaybackEvent e;
+    e.trial = trial;
+    e.kind = kind == "stop" ? EventKind::stop
+             : kind == "switch" ? EventKind::switch_to
+             : kind == "step"   ? EventKind::step
+                                : EventKind::play;
+    e.stimulus = q.column_text(1);
+    e.timestamp_ms = q.column_int64(2);
+    e.detail_json = q.column_text(3);
+    out.push_back(std::move(e));
+  }
+  return out;
+}
+
+std::vector<EventRow> ResultsStore::event_rows() const {
+  sqlite::Statement q(db_,
+                      "SELECT p.study, p.id, p.code, st.export_personal, e.session, e.block_index, t.block_id, "
+                      "t.block_type, e.trial_index, e.kind, e.stimulus, t.stimuli, t.stimulus_hashes, "
+                      "coalesce(e.detail, ''), e.timestamp_ms "
+                      "FROM events e JOIN trials t USING (session, block_index, trial_index) "
+                      "JOIN sessions s ON s.id = e.session JOIN participants p ON p.id = s.participant "
+                      "JOIN studies st ON st.id = p.study ORDER BY e.session, e.id");
+  std::vector<EventRow> rows;
+  while (q.step()) {
+    EventRow row;
+    read_context(q, row);
+    row.kind = q.column_text(9);
+    row.stimulus = q.column_text(10);
+    // The hash of the played stimulus, looked up among the trial's stimuli (a slider or staircase
+    // variant carries its own hash in the detail instead).
+    const auto names = nlohmann::json::parse(q.column_text(11));
+    const auto hashes = nlohmann::json::parse(q.column_text(12));
+    for (std::size_t i = 0; i < names.size() && i < hashes.size(); ++i)
+      if (names[i] == row.stimulus) row.stimulus_hash = hashes[i].get<std::string>();
+    row.detail_json = q.column_text(13);
+    row.timestamp_ms = q.column_int64(14);
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+std::vector<TrialRow> ResultsStore::trial_rows() const {
+  sqlite::Statement q(db_,
+                      "SELECT p.study, p.id, p.code, st.export_personal, t.session, t.block_index, t.block_id, "
+                      "t.block_type, t.trial_index, t.stimuli, t.stimulus_hashes "
+                      "FROM trials t JOIN sessions s ON s.id = t.session JOIN participants p ON p.id = s.participant "
+                      "JOIN studies st ON st.id = p.study ORDER BY t.session, t.block_index, t.trial_index");
+  std::vector<TrialRow> rows;
+  while (q.step()) {
+    TrialRow row;
+    read_context(q, row);
+    row.stimuli_json = q.column_text(9);
+    row.hashes_json = q.column_text(10);
+    rows.push_back(std::move(row));
+  }
+  return rows;
 }
 
 std::vector<StudyRecord> ResultsStore::studies() const {
@@ -250,15 +382,7 @@ std::vector<ResponseRow> ResultsStore::response_rows() const {
   std::vector<ResponseRow> rows;
   while (q.step()) {
     ResponseRow row;
-    row.study = q.column_text(0);
-    row.participant = q.column_int64(1);
-    row.participant_code = q.column_text(2);
-    row.export_personal = q.column_int64(3) != 0;
-    row.session = q.column_int64(4);
-    row.block_index = int(q.column_int64(5));
-    row.block_id = q.column_text(6);
-    row.block_type = q.column_text(7);
-    row.trial_index = int(q.column_int64(8));
+    read_context(q, row);
     row.stimuli_json = q.column_text(9);
     row.value_json = q.column_text(10);
     row.rt_ms = q.column_double(11);

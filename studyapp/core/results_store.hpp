@@ -42,18 +42,34 @@ struct ResponseRecord {
   std::int64_t timestamp_ms = 0;  // Unix time in milliseconds
 };
 
-enum class EventKind { play, stop, switch_to };
-std::string to_string(EventKind kind);  // "play", "stop", "switch"
+// play/stop/switch: playback; step: one answered step of a staircase track (detail holds it).
+enum class EventKind { play, stop, switch_to, step };
+std::string to_string(EventKind kind);  // "play", "stop", "switch", "step"
 
 struct PlaybackEvent {
   TrialPosition trial;
   EventKind kind = EventKind::play;
   std::string stimulus;
   std::int64_t timestamp_ms = 0;
+  std::string detail_json;  // "" = none; e.g. {"level":18,"correct":true} or slider overrides
 };
 
-// One response joined with everything needed to read it alone (the export's row).
-struct ResponseRow {
+struct SessionRecord {
+  std::int64_t id = 0, participant = 0, started_ms = 0;
+  std::optional<std::int64_t> finished_ms;
+  std::uint64_t schedule_seed = 0;
+};
+
+// A session's completion, for the experimenter's overview.
+struct SessionSummary {
+  std::string study, participant_code;
+  std::int64_t session = 0, started_ms = 0;
+  std::optional<std::int64_t> finished_ms;
+  std::int64_t trials = 0, responses = 0;
+};
+
+// Where a stored row belongs: study, participant, session, block and trial (the export's key columns).
+struct TrialContext {
   std::string study;
   std::int64_t participant = 0;
   std::string participant_code;
@@ -62,11 +78,26 @@ struct ResponseRow {
   int block_index = 0;
   std::string block_id, block_type;
   int trial_index = 0;
+};
+
+// One response joined with everything needed to read it alone (the export's row).
+struct ResponseRow : TrialContext {
   std::string stimuli_json;
   std::string value_json;
   double rt_ms = 0.0;
   int plays = 0;
   std::int64_t timestamp_ms = 0;
+};
+
+// One playback or staircase event joined with its trial (the export's events.csv row).
+struct EventRow : TrialContext {
+  std::string kind, stimulus, stimulus_hash, detail_json;
+  std::int64_t timestamp_ms = 0;
+};
+
+// One scheduled trial with the recipe hashes of its stimuli (the export's trials.csv row).
+struct TrialRow : TrialContext {
+  std::string stimuli_json, hashes_json;
 };
 
 class ResultsStore {
@@ -96,9 +127,18 @@ class ResultsStore {
   // The first scheduled trial (in block, trial order) without a response; nullopt when all are done.
   std::optional<TrialPosition> first_unanswered_trial(std::int64_t session) const;
 
+  std::optional<std::int64_t> find_participant(const std::string& study_id, const std::string& code) const;
+  // The participant's most recent session without a finish time.
+  std::optional<SessionRecord> unfinished_session(std::int64_t participant) const;
+  std::vector<SessionSummary> session_summaries() const;
+  std::vector<TrialPosition> answered_trials(std::int64_t session) const;
+  std::vector<PlaybackEvent> events(std::int64_t session, TrialPosition trial) const;  // in order
+
   std::vector<StudyRecord> studies() const;
   std::optional<ResponseRecord> response(std::int64_t session, TrialPosition trial) const;
   std::vector<ResponseRow> response_rows() const;  // ordered by session, block, trial
+  std::vector<EventRow> event_rows() const;        // ordered by session, then as logged
+  std::vector<TrialRow> trial_rows() const;        // ordered by session, block, trial
   std::int64_t count(const std::string& table) const;  // rows in one of the store's tables
   std::string integrity_check() const;                  // "ok" when PRAGMA integrity_check passes
   const std::string& path() const { return db_.path(); }

@@ -107,7 +107,9 @@ std::vector<Trial> block_trials(const Block& b, std::size_t block_index, std::mt
   } else if (const auto* a = std::get_if<AdjustBlock>(&b.body)) {
     add_single_trials(out, proto, {a->paramset}, b.repeats);
   } else if (const auto* s = std::get_if<StaircaseBlock>(&b.body)) {
-    add_single_trials(out, proto, {s->stimulus}, b.repeats);  // the track itself adapts at run time
+    // One trial per track; the track itself adapts at run time. Its stimuli: stimulus, reference.
+    add_single_trials(out, proto, {s->stimulus}, b.repeats);
+    for (auto& t : out) t.stimuli.push_back(s->reference ? s->reference->name : s->stimulus.name);
   } else {
     out.push_back(proto);  // instructions, questionnaire: one screen
   }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "studyapp/core/protocol.hpp"
+#include "synthesis/paramset.hpp"
 
 namespace ms {
 
@@ -48,6 +49,7 @@ class StimulusCache {
   std::string cache_dir_;
   double sample_rate_hz_;
   std::map<std::string, std::string> hashes_;
+  std::map<std::string, std::shared_ptr<const ParamSet>> paramsets_;  // loaded once, by stimulus name
   mutable std::mutex mutex_;
   std::map<std::string, Samples> memory_;  // hash -> samples
   std::size_t renders_ = 0;

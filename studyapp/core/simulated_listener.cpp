@@ -1,0 +1,190 @@
+// SimulatedListener: one decision rule per block type, all driven by perceptual_distance_db plus
+// Gaussian noise; see simulated_listener.hpp.
+#include "studyapp/core/simulated_listener.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "studyapp/core/response_format.hpp"
+
+namespace ms {
+
+namespace {
+
+double clamp(double v, double lo, double hi) { return std::min(hi, std::max(lo, v)); }
+double logistic(double x) { return 1.0 / (1.0 + std::exp(-x)); }
+
+// The label a stimulus stands for: a label equal to its name or contained in it ("glass-plate").
+std::string label_of(const std::string& stimulus, const std::vector<std::string>& labels) {
+  for (const auto& l : labels)
+    if (stimulus == l) return l;
+  for (const auto& l : labels)
+    if (stimulus.find(l) != std::string::npos) return l;
+  return "";
+}
+
+std::string format_number(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+}  // namespace
+
+SimulatedListener::SimulatedListener(StimulusCache& cache, std::uint64_t seed, double noise_db)
+    : cache_(cache), rng_(seed), noise_db_(noise_db) {}
+
+const PerceptualProfile& SimulatedListener::profile(const std::string& key, const Samples& samples) {
+  auto it = profiles_.find(key);
+  if (it == profiles_.end()) it = profiles_.emplace(key, perceptual_profile(*samples, cache_.sample_rate_hz())).first;
+  return it->second;
+}
+
+const PerceptualProfile& SimulatedListener::profile(const std::string& name) {
+  return profile(cache_.hash(name), cache_.samples(name));
+}
+
+double SimulatedListener::distance_db(const std::string& a, const std::string& b) {
+  return perceptual_distance_db(profile(a), profile(b));
+}
+
+double SimulatedListener::noisy(double d) {
+  std::normal_distribution<double> n(0.0, noise_db_);
+  return std::max(0.0, d + n(rng_));
+}
+
+bool SimulatedListener::staircase_correct(const StaircaseBlock& block, double level) {
+  const std::vector<std::string> set{block.parameter + "=" + format_number(level)};
+  const PerceptualProfile& cmp =
+      profile(cache_.hash_with(block.stimulus.name, set), cache_.samples_with(block.stimulus.name, set));
+  const PerceptualProfile ref = profile(block.reference ? block.reference->name : block.stimulus.name);
+  const double d = perceptual_distance_db(ref, cmp);
+  // 2-interval psychometric function: chance 50 %, 75 % correct at 1.5 dB.
+  const double p = 0.5 + 0.5 * (1.0 - std::exp(-std::pow(d / 1.5, 2.0) * std::log(2.0)));
+  return std::uniform_real_distribution<double>(0.0, 1.0)(rng_) < p;
+}
+
+SimulatedAnswer SimulatedListener::answer(const Block& block, const Trial& trial) {
+  SimulatedAnswer a;
+  std::normal_distribution<double> unit(0.0, 1.0);
+  // Harder decisions (small distances) take longer: 600 ms plus up to 1.5 s.
+  auto rt = [&](double d) { return 600.0 + 1500.0 * std::exp(-d / 3.0) + 100.0 * std::abs(unit(rng_)); };
+  const auto& s = trial.stimuli;
+  a.plays = int(s.size());
+  switch (block.type) {
+    case BlockType::instructions:
+      a.value = "ok";
+      a.rt_ms = 3000.0;
+      a.plays = 0;
+      break;
+    case BlockType::ab: {
+      const auto mode = std::get<AbBlock>(block.body).mode;
+      const double d = noisy(distance_db(s.at(0), s.at(1)));
+      a.rt_ms = rt(d);
+      if (mode == AbMode::same_different) {
+        a.value = d > 1.0 ? "different" : "same";
+      } else if (mode == AbMode::abx) {
+        a.value = noisy(distance_db(s.at(0), s.at(2))) <= noisy(distance_db(s.at(1), s.at(2))) ? "A" : "B";
+      } else if (mode == AbMode::bipolar) {
+        a.value = int(std::lround(clamp(-d / 2.0 + 0.5 * unit(rng_), -3.0, 3.0)));
+      } else {  // preference, 2afc: the brighter sound (higher loudness-weighted Bark centroid)
+        const double ca = profile(s.at(0)).centroid_bark + 0.3 * unit(rng_);
+        const double cb = profile(s.at(1)).centroid_bark + 0.3 * unit(rng_);
+        a.value = ca >= cb ? "A" : "B";
+      }
+      break;
+    }
+    case BlockType::mushra: {
+      nlohmann::json scores = nlohmann::json::object();
+      double hardest = 1e9;
+      for (const auto& name : s) {
+        const double d = noisy(distance_db(trial.reference, name));
+        hardest = std::min(hardest, d);
+        scores[name] = std::lround(clamp(100.0 * std::exp(-d / 6.0), 0.0, 100.0));
+      }
+      a.value = scores;
+      a.rt_ms = 4000.0 * double(s.size()) + rt(hardest);
+      a.plays = 2 * int(s.size()) + 1;
+      break;
+    }
+    case BlockType::magnitude: {
+      const auto& m = std::get<MagnitudeBlock>(block.body);
+      const double d_mod = m.modulus ? distance_db(m.modulus->at(0).name, m.modulus->at(1).name) : 3.0;
+      const double d = noisy(distance_db(s.at(0), s.at(1)));
+      const double ratio = (d + 0.5) / (d_mod + 0.5) * std::exp(0.1 * unit(rng_));
+      a.value = std::max(1.0, std::round(100.0 * ratio));
+      a.rt_ms = rt(d) + 1500.0;
+      break;
+    }
+    case BlockType::identify: {
+      const auto& labels = std::get<IdentifyBlock>(block.body).labels;
+      const auto& stimuli = std::get<IdentifyBlock>(block.body).stimuli;
+      // The label of the stimulus the sound seems closest to (itself included), among those whose
+      // label is known; a sound with no known label gets a random one.
+      std::string best;
+      double best_d = 1e300;
+      for (const auto& other : stimuli) {
+        const std::string l = label_of(other.name, labels);
+        if (l.empty()) continue;
+        const double d = noisy(distance_db(s.at(0), other.name));
+        if (d < best_d) best_d = d, best = l;
+      }
+      if (best.empty()) best = labels.at(std::size_t(std::uniform_int_distribution<std::size_t>(0, labels.size() - 1)(rng_)));
+      a.value = best;
+      a.rt_ms = rt(best_d < 1e300 ? best_d : 0.0);
+      break;
+    }
+    case BlockType::rating: {
+      const PerceptualProfile& p = profile(s.at(0));
+      nlohmann::json ratings = nlohmann::json::object();
+      for (const auto& attr : std::get<RatingBlock>(block.body).attributes) {
+        const bool temporal = attr.name.find("dur") != std::string::npos || attr.name.find("ring") != std::string::npos;
+        const double x = temporal ? std::log(std::max(1e-3, p.decay_s) / 0.5) : (p.centroid_bark - 12.0) / 4.0;
+        const double v = 1.0 + double(attr.points - 1) * logistic(x + 0.3 * unit(rng_));
+        ratings[attr.name] = int(std::lround(clamp(v, 1.0, double(attr.points))));
+      }
+      a.value = ratings;
+      a.rt_ms = rt(1.0) + 1000.0;
+      break;
+    }
+    case BlockType::adjust: {
+      // Tunes each slider in turn to the value (of 5 tried) that sounds closest to the stimulus as
+      // the protocol defines it, as a listener matching a target by ear would.
+      const auto& adj = std::get<AdjustBlock>(block.body);
+      const PerceptualProfile target = profile(adj.paramset.name);
+      nlohmann::json values = nlohmann::json::object();
+      a.plays = 0;
+      for (const auto& slider : adj.sliders) {
+        double best_v = slider.min, best_d = 1e300;
+        for (int k = 0; k < 5; ++k) {
+          const double v = slider.min + (slider.max - slider.min) * (double(k) + 0.5) / 5.0;
+          const std::vector<std::string> set{slider.key + "=" + format_number(v)};
+          const double d = noisy(perceptual_distance_db(
+              target, profile(cache_.hash_with(adj.paramset.name, set), cache_.samples_with(adj.paramset.name, set))));
+          ++a.plays;
+          if (d < best_d) best_d = d, best_v = v;
+        }
+        values[slider.key] = best_v;
+      }
+      a.value = values;
+      a.rt_ms = 2500.0 * a.plays;
+      break;
+    }
+    case BlockType::questionnaire: {
+      const auto& q = std::get<QuestionnaireBlock>(block.body);
+      nlohmann::json answers = nlohmann::json::object();
+      for (std::size_t i = 0; i < q.questions.size(); ++i)
+        answers[question_id(q.questions[i], i)] = q.questions[i].options.empty() ? "autopilot" : q.questions[i].options[0];
+      a.value = answers;
+      a.rt_ms = 5000.0;
+      a.plays = 0;
+      break;
+    }
+    case BlockType::staircase:  // answered step by step through staircase_correct
+    case BlockType::unknown:
+      break;
+  }
+  return a;
+}
+
+}  // namespace ms

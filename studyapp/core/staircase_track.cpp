@@ -1,0 +1,49 @@
+// StaircaseTrack: the transformed up-down rule; see staircase_track.hpp.
+#include "studyapp/core/staircase_track.hpp"
+
+#include "analysis/staircase.hpp"
+
+namespace ms {
+
+StaircaseTrack::StaircaseTrack(double start, double step, int down, int up, int reversals)
+    : level_(start), step_(step), down_(down), up_(up), max_reversals_(reversals) {}
+
+void StaircaseTrack::record(bool correct) {
+  levels_.push_back(level_);
+  answers_.push_back(correct);
+  int move = 0;  // +1 easier, -1 harder
+  if (correct) {
+    wrong_run_ = 0;
+    if (++correct_run_ >= down_) {
+      correct_run_ = 0;
+      move = -1;
+    }
+  } else {
+    correct_run_ = 0;
+    if (++wrong_run_ >= up_) {
+      wrong_run_ = 0;
+      move = +1;
+    }
+  }
+  if (move == 0) return;
+  if (direction_ != 0 && move != direction_) ++reversal_count_;
+  direction_ = move;
+  level_ += move * step_;
+}
+
+bool StaircaseTrack::finished() const {
+  return reversal_count_ >= static_cast<std::size_t>(max_reversals_) || levels_.size() >= kMaxSteps;
+}
+
+std::optional<double> StaircaseTrack::threshold() const {
+  // The level the track moved to after the last answer counts too: its last reversal happened there.
+  std::vector<double> path = levels_;
+  path.push_back(level_);
+  const StaircaseThreshold all = staircase_threshold(path, path.size());
+  const std::size_t n = all.reversal_levels.size();
+  if (n == 0) return std::nullopt;
+  const std::size_t skip = n > 4 ? 2 : 0;  // the approach, not the threshold
+  return staircase_threshold(path, n - skip).threshold;
+}
+
+}  // namespace ms

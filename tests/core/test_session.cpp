@@ -1,0 +1,145 @@
+// Session: answers are checked, committed and advance the schedule; reopening resumes at the first
+// unanswered trial with the same schedule; staircase tracks resume from their committed steps.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "core_fixtures.hpp"
+#include "studyapp/core/protocol_parser.hpp"
+#include "studyapp/core/session.hpp"
+#include "studyapp/core/stimulus_cache.hpp"
+#include "synthesis/input_error.hpp"
+
+namespace ms {
+namespace {
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+nlohmann::json good_answer(const Session& s) {
+  const Trial& t = s.current();
+  if (t.type == BlockType::instructions) return "ok";
+  if (t.type == BlockType::identify) return t.stimuli.at(0);  // labels equal the stimulus names
+  nlohmann::json v = nlohmann::json::object();
+  for (const auto& name : t.stimuli) v[name] = 50;
+  return v;
+}
+
+TEST(Session, AnswersAreCheckedCommittedAndAdvance) {
+  test::TempDir dir;
+  const std::string path = testing::write_small_study(dir);
+  const Protocol p = load_protocol(path);
+  StimulusCache cache(p, "");
+  Session s(p, slurp(path), "P01", dir.file("r.sqlite"), cache.hashes(), 1000);
+  EXPECT_FALSE(s.resumed());
+  ASSERT_EQ(s.total(), 6u);  // instructions + identify 2 stimuli x 2 repeats + one MUSHRA screen
+  EXPECT_EQ(s.current().type, BlockType::instructions);
+  // A malformed answer is refused and nothing is stored.
+  EXPECT_THROW(s.answer("yes", 10.0, 0, 1001), std::invalid_argument);
+  EXPECT_EQ(s.answered(), 0u);
+  s.answer("ok", 10.0, 0, 1001);
+  ASSERT_EQ(s.current().type, BlockType::identify);
+  EXPECT_THROW(s.answer("metal", 10.0, 1, 1002), std::invalid_argument);  // not a label
+  while (!s.finished()) {
+    if (s.current().type == BlockType::mushra) {
+      nlohmann::json missing = good_answer(s);
+      missing.erase(s.current().stimuli.back());
+      EXPECT_THROW(s.answer(missing, 1.0, 1, 1003), std::invalid_argument);  // every condition rated
+    }
+    s.log_event(EventKind::play, s.current().stimuli.empty() ? "" : s.current().stimuli[0], 1004);
+    s.answer(good_answer(s), 500.0, 1, 1005);
+  }
+  EXPECT_EQ(s.answered(), 6u);
+  EXPECT_EQ(s.store().count("responses"), 6);
+  EXPECT_EQ(s.store().count("events"), 5);  // instructions has no stimulus but its event still counts
+  const auto summaries = s.store().session_summaries();
+  ASSERT_EQ(summaries.size(), 1u);
+  ASSERT_TRUE(summaries[0].finished_ms.has_value());  // the last answer finishes the session
+  // Recipe hashes are stored with the trials (mushra trial: reference, lowq, lp).
+  for (const auto& row : s.store().trial_rows()) {
+    if (row.block_type == "mushra") {
+      EXPECT_NE(row.hashes_json.find(cache.hash("lp")), std::string::npos);
+    }
+  }
+}
+
+TEST(Session, ReopeningResumesAtTheFirstUnansweredTrialWithTheSameSchedule) {
+  test::TempDir dir;
+  const std::string path = testing::write_small_study(dir);
+  const Protocol p = load_protocol(path);
+  StimulusCache cache(p, "");
+  std::vector<std::vector<std::string>> first_order;
+  {
+    Session s(p, slurp(path), "P02", dir.file("r.sqlite"), cache.hashes(), 1000);
+    for (const auto& t : s.schedule().trials) first_order.push_back(t.stimuli);
+    for (int i = 0; i < 3; ++i) s.answer(good_answer(s), 100.0, 1, 1000 + i);
+  }  // the program "stops" here
+  Session again(p, slurp(path), "P02", dir.file("r.sqlite"), cache.hashes(), 5000);
+  EXPECT_TRUE(again.resumed());
+  EXPECT_EQ(again.current_index(), 3u);
+  EXPECT_EQ(again.answered(), 3u);
+  std::vector<std::vector<std::string>> order;
+  for (const auto& t : again.schedule().trials) order.push_back(t.stimuli);
+  EXPECT_EQ(order, first_order);
+  while (!again.finished()) again.answer(good_answer(again), 100.0, 1, 6000);
+  EXPECT_EQ(again.store().count("responses"), 6);
+  EXPECT_EQ(again.store().count("sessions"), 1);
+  // A finished participant starts a new session next time (e.g. a second visit).
+  Session next(p, slurp(path), "P02", dir.file("r.sqlite"), cache.hashes(), 9000);
+  EXPECT_FALSE(next.resumed());
+  EXPECT_EQ(next.current_index(), 0u);
+}
+
+TEST(Session, AChangedProtocolIsRefusedForTheSameDatabase) {
+  test::TempDir dir;
+  const std::string path = testing::write_small_study(dir);
+  const Protocol p = load_protocol(path);
+  StimulusCache cache(p, "");
+  { Session s(p, slurp(path), "P03", dir.file("r.sqlite"), cache.hashes(), 1000); }
+  try {
+    Session s(p, slurp(path) + "# edited\n", "P03", dir.file("r.sqlite"), cache.hashes(), 1000);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("different protocol"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Session, StaircaseStepsAreCommittedAndATrackResumes) {
+  test::TempDir dir;
+  const std::string path = testing::write_small_study(
+      dir, "  - {type: staircase, id: sc, stimulus: low, reference: high, parameter: amp_scale, start: 0.2,\n"
+           "     step: 0.05, down_up: [2, 1], reversals: 4}\n");
+  const Protocol p = load_protocol(path);
+  StimulusCache cache(p, "");
+  const bool pattern[] = {true, true, false, true, true, false, true, true, false, false, true, true, true, true};
+  std::size_t used = 0;
+  {
+    Session s(p, slurp(path), "P04", dir.file("r.sqlite"), cache.hashes(), 1000);
+    while (s.current().type != BlockType::staircase) s.answer(good_answer(s), 1.0, 1, 1000);
+    for (; used < 5; ++used) s.staircase_step(pattern[used], 300.0, 2000);
+    EXPECT_EQ(s.staircase().levels().size(), 5u);
+  }
+  Session s(p, slurp(path), "P04", dir.file("r.sqlite"), cache.hashes(), 3000);
+  ASSERT_TRUE(s.resumed());
+  ASSERT_EQ(s.current().type, BlockType::staircase);
+  EXPECT_EQ(s.staircase().levels().size(), 5u);  // rebuilt from the committed steps
+  StaircaseTrack replay(0.2, 0.05, 2, 1, 4);
+  for (std::size_t i = 0; i < 5; ++i) replay.record(pattern[i]);
+  EXPECT_DOUBLE_EQ(s.staircase().level(), replay.level());
+  while (!s.finished()) s.staircase_step(pattern[used++ % 14], 300.0, 4000);
+  const auto r = s.store().response(s.id(), {3, 0});
+  ASSERT_TRUE(r.has_value());
+  const auto v = nlohmann::json::parse(r->value_json);
+  EXPECT_EQ(v["parameter"], "amp_scale");
+  EXPECT_EQ(v["levels"].size(), used);
+  EXPECT_EQ(r->plays, int(used));
+  EXPECT_FALSE(v["threshold"].is_null());
+}
+
+}  // namespace
+}  // namespace ms
