@@ -59,6 +59,9 @@ int run_autopilot_command(const AppOptions& options) {
               << s.answered_now << " trials now, " << (s.finished ? "finished" : "not finished") << " (" << s.total
               << " trials)\nresults: " << s.db_path << "\n";
     return 0;
+  } catch (const InvalidProtocol& e) {
+    for (const std::string& p : e.problems()) std::cerr << "studyapp: " << p << "\n";
+    return 2;
   } catch (const InputError& e) {
     std::cerr << "studyapp: " << e.what() << "\n";
     return 2;

@@ -1,4 +1,4 @@
-// ExperimenterWindow: sessions table (session_overview), Export (export_results), pictures.
+// ExperimenterWindow: sessions table (ResultsStore::session_summaries), Export (export_results), pictures.
 #include "studyapp/gui/experimenter_window.hpp"
 
 #include <QDateTime>
@@ -13,7 +13,6 @@
 #include "studyapp/core/export.hpp"
 #include "studyapp/core/results_store.hpp"
 #include "studyapp/gui/analysis_pictures.hpp"
-#include "studyapp/gui/session_overview.hpp"
 
 namespace ms::gui {
 
@@ -76,19 +75,20 @@ bool ExperimenterWindow::open_db(const QString& path) {
   path_->setText(path);
   table_->setRowCount(0);
   try {
-    const auto sessions = session_overview(path.toStdString());
+    const ResultsStore store(path.toStdString(), ResultsStore::Mode::read_only);
+    const auto sessions = store.session_summaries();
     table_->setRowCount(static_cast<int>(sessions.size()));
     for (int r = 0; r < static_cast<int>(sessions.size()); ++r) {
       const SessionSummary& s = sessions[static_cast<std::size_t>(r)];
-      const double pct = s.scheduled ? 100.0 * static_cast<double>(s.answered) / static_cast<double>(s.scheduled) : 0.0;
-      const QStringList cells{QString::fromStdString(s.study), QString::fromStdString(s.participant),
+      const double pct = s.trials ? 100.0 * static_cast<double>(s.responses) / static_cast<double>(s.trials) : 0.0;
+      const QStringList cells{QString::fromStdString(s.study), QString::fromStdString(s.participant_code),
                               QString::number(s.session), when(s.started_ms),
                               s.finished_ms ? when(*s.finished_ms) : QString("—"),
-                              QString("%1 / %2").arg(s.answered).arg(s.scheduled), QString("%1 %").arg(pct, 0, 'f', 0)};
+                              QString("%1 / %2").arg(s.responses).arg(s.trials), QString("%1 %").arg(pct, 0, 'f', 0)};
       for (int c = 0; c < cells.size(); ++c) table_->setItem(r, c, new QTableWidgetItem(cells[c]));
     }
     status_->setText(QString("%1 session(s)").arg(sessions.size()));
-    draw_pictures();
+    draw_pictures(store);
     return true;
   } catch (const std::exception& e) {
     status_->setText(QString("Cannot read %1: %2").arg(path, QString::fromStdString(e.what())));
@@ -96,13 +96,12 @@ bool ExperimenterWindow::open_db(const QString& path) {
   }
 }
 
-void ExperimenterWindow::draw_pictures() {
+void ExperimenterWindow::draw_pictures(const ResultsStore& store) {
   while (QLayoutItem* item = pictures_layout_->takeAt(0)) {
     delete item->widget();
     delete item;
   }
   picture_count_ = 0;
-  const ResultsStore store(path_->text().toStdString(), ResultsStore::Mode::read_only);
   for (const Picture& p : draw_analysis_pictures(store.response_rows(), picture_dir_.path().toStdString())) {
     pictures_layout_->addWidget(new QLabel("<b>" + QString::fromStdString(p.title) + "</b>", pictures_));
     auto* image = new QLabel(pictures_);

@@ -9,6 +9,10 @@
 #include <QVBoxLayout>
 #include <QWidget>
 
+namespace ms {
+class ResultsStore;
+}
+
 namespace ms::gui {
 
 class ExperimenterWindow : public QWidget {
@@ -25,7 +29,7 @@ class ExperimenterWindow : public QWidget {
   int picture_count() const { return picture_count_; }
 
  private:
-  void draw_pictures();
+  void draw_pictures(const ResultsStore& store);
 
   QLineEdit* path_;
   QTableWidget* table_;

@@ -24,6 +24,7 @@ class MagnitudeView : public TrialView {
     names.insert(names.end(), trial.stimuli.begin(), trial.stimuli.end());
     labels << "A" << "B";
     c.set_sounds(sounds_of(c, names));
+    require_all_played_ = c.session().current_block().listen_all;
     add_prompt(modulus_count_ ? "First listen to the modulus pair: its difference is 100. Then listen to A and B "
                                 "and type how different they sound (e.g. 50 = half as different, 200 = twice)."
                               : "Listen to A and B and type how different they sound (a number above 0).");
@@ -42,7 +43,7 @@ class MagnitudeView : public TrialView {
   }
 
  protected:
-  bool ready() const override { return value() > 0.0 && controller_.played_all(); }
+  bool ready() const override { return value() > 0.0; }
   void on_sound_played(int) override { gate_pair(); }
 
  private:

@@ -129,7 +129,8 @@ void MainWindow::load_protocol(const QString& path) {
   connect(c, &StudyController::breakReached, this, &MainWindow::show_break);
   connect(c, &StudyController::finished, this, &MainWindow::show_done);
   connect(c, &StudyController::error, error_, &QLabel::setText);
-  start_page_->set_audio_message(c->set_audio_device(start_page_->audio_device()));
+  const QString audio_message = c->set_audio_device(start_page_->audio_device());
+  if (!audio_message.isEmpty()) start_page_->set_audio_message(audio_message);
   c->prepare();
 }
 

@@ -17,7 +17,7 @@ class MushraView : public TrialView {
     std::vector<std::string> names{trial.reference};
     names.insert(names.end(), trial.stimuli.begin(), trial.stimuli.end());
     c.set_sounds(sounds_of(c, names));
-    require_all_played_ = true;
+    require_all_played_ = c.session().current_block().listen_all;
     digits_play_sounds_ = true;  // 1 = reference, 2.. = A, B, ...
     add_prompt("Rate the basic audio quality of each sound compared with the reference. "
                "Click a sound while another plays to switch at the same moment.");

@@ -15,7 +15,7 @@ class RatingView : public TrialView {
   RatingView(StudyController& c, QWidget* parent) : TrialView(c, parent) {
     const auto* body = std::get_if<RatingBlock>(&c.session().current_block().body);
     c.set_sounds(sounds_of(c, c.session().current().stimuli));
-    require_all_played_ = true;
+    require_all_played_ = c.session().current_block().listen_all;
     add_prompt("Listen to the sound and rate it on each scale.");
     add_sound_buttons({"Sound"}, false);
     auto* grid = new QGridLayout;

@@ -1,6 +1,7 @@
-// Adaptive staircase (three intervals): each step plays the reference, then A and B — one of them the
-// reference again, the other the stimulus with the tracked parameter at the track's level (rendered on a
-// worker) — and asks which of A/B is the same as the reference. Each answer is one Session step; the
+// Adaptive staircase (three intervals): each step plays the reference (the block's `reference`, default
+// the stimulus as defined), then A and B — one of them the reference again, the other the stimulus with
+// the tracked parameter at the track's level (rendered on a worker) — and asks which of A/B is the same
+// as the reference. Each answer is one Session step; the
 // trial ends when the track does. Which interval holds the comparison is drawn from the session's seed.
 #include <QTimer>
 
@@ -21,7 +22,8 @@ class StaircaseView : public TrialView {
     setObjectName("staircase-view");
     require_all_played_ = true;
     add_prompt("Listen to the reference, then to A and B. Which of A and B is the same as the reference?");
-    reference_ = c.cache().samples(block_.stimulus.name);
+    reference_name_ = block_.reference ? block_.reference->name : block_.stimulus.name;
+    reference_ = c.cache().samples(reference_name_);
     c.set_sounds({Sound{"reference", reference_}, Sound{"A", reference_}, Sound{"B", reference_}});
     auto* sequence = new QPushButton(QString::fromUtf8("\u25B6 Play reference, A, B"), this);
     sequence->setObjectName("play-sequence");
@@ -61,9 +63,9 @@ class StaircaseView : public TrialView {
                  [this](Samples samples, double, const std::string& error) {
                    if (!error.empty()) return step_label_->setText(QString::fromStdString("cannot render: " + error));
                    const std::string name = block_.stimulus.name + "@" + override_text(block_.parameter, level_);
-                   controller_.set_sounds({Sound{block_.stimulus.name, reference_},
-                                           Sound{comparison_in_b_ ? block_.stimulus.name : name, comparison_in_b_ ? reference_ : samples},
-                                           Sound{comparison_in_b_ ? name : block_.stimulus.name, comparison_in_b_ ? samples : reference_}});
+                   const Sound reference{reference_name_, reference_}, comparison{name, samples};
+                   controller_.set_sounds({reference, comparison_in_b_ ? reference : comparison,
+                                           comparison_in_b_ ? comparison : reference});
                    comparison_ready_ = true;
                    for (std::size_t i = 0; i < 3; ++i) play_button(i)->setEnabled(true);
                    refresh();
@@ -87,6 +89,7 @@ class StaircaseView : public TrialView {
   }
 
   StaircaseBlock block_;
+  std::string reference_name_;  // the block's `reference`, or the stimulus as defined
   Samples reference_;
   QButtonGroup* choices_ = nullptr;
   QLabel* step_label_ = nullptr;

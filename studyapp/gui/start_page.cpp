@@ -102,6 +102,12 @@ void StartPage::set_audio_choices(const QString& device) {
   audio_->addItem("No sound (null output; plays are still logged)", "null");
   const int index = audio_->findData(device);
   audio_->setCurrentIndex(index >= 0 ? index : audio_->count() - 1);
+  if (index < 0) {
+    const QStringList names = AudioOutput::device_names();
+    set_audio_message(QString("Audio device '%1' was not found (available: %2); no sound will be heard "
+                              "(null output) unless you choose another device.")
+                          .arg(device, names.isEmpty() ? QString("none") : names.join(", ")));
+  }
 }
 
 void StartPage::set_audio_message(const QString& message) { audio_message_->setText(message); }

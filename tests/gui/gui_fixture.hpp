@@ -68,11 +68,19 @@ std::vector<T*> children_with_prefix(QWidget* root, const QString& prefix) {
   return out;
 }
 
+// A mouse click where a person would click: the middle of a push button, the indicator of a radio button
+// (a radio stretched by its layout only reacts over its indicator and text).
+inline void press(QAbstractButton* b) {
+  if (qobject_cast<QPushButton*>(b)) QTest::mouseClick(b, Qt::LeftButton);
+  else QTest::mouseClick(b, Qt::LeftButton, {}, QPoint(6, b->height() / 2));
+}
+
 inline void click(QWidget* root, const QString& name) {
-  if (auto* b = child<QAbstractButton>(root, name)) QTest::mouseClick(b, Qt::LeftButton);
+  if (auto* b = child<QAbstractButton>(root, name)) press(b);
 }
 
 inline ms::gui::AppOptions demo_options(const std::string& participant, const std::string& db) {
+  app();  // before any widget
   ms::gui::AppOptions o;
   o.protocol_path = demo_protocol();
   o.participant = participant;
@@ -125,7 +133,7 @@ inline void answer_trial(ms::gui::MainWindow& w, DriveLog& log) {
     case ms::BlockType::ab: {
       play_all();
       if (auto bipolar = children_with_prefix<QAbstractButton>(view, "bipolar-1"); !bipolar.empty()) {
-        QTest::mouseClick(bipolar[0], Qt::LeftButton);
+        press(bipolar[0]);
       } else {
         QTest::keyClick(view, Qt::Key_1);  // 1 = first choice
         if (!next->isEnabled()) QTest::mouseClick(children_with_prefix<QAbstractButton>(view, "choice-")[0], Qt::LeftButton);
@@ -163,7 +171,7 @@ inline void answer_trial(ms::gui::MainWindow& w, DriveLog& log) {
       return;
     case ms::BlockType::rating: {
       for (auto* r : children_with_prefix<QAbstractButton>(view, "rating-"))
-        if (r->objectName().endsWith("-5")) QTest::mouseClick(r, Qt::LeftButton);
+        if (r->objectName().endsWith("-5")) press(r);
       if (!next->isEnabled()) log.listen_rule.push_back("rating");
       play_all();
       QTest::mouseClick(next, Qt::LeftButton);
@@ -196,7 +204,7 @@ inline void answer_trial(ms::gui::MainWindow& w, DriveLog& log) {
     case ms::BlockType::questionnaire:
       for (auto* e : children_with_prefix<QLineEdit>(view, "question-")) QTest::keyClicks(e, "fine, thanks");
       if (auto options = children_with_prefix<QAbstractButton>(view, "option-"); !options.empty())
-        QTest::mouseClick(options[0], Qt::LeftButton);
+        press(options[0]);
       QTest::mouseClick(next, Qt::LeftButton);
       return;
     case ms::BlockType::unknown: return;
@@ -229,7 +237,11 @@ inline bool drive(ms::gui::MainWindow& w, DriveLog& log, int max_trials = 1000,
     if (!w.controller()->session().finished() && w.controller()->session().current_index() == index &&
         !w.current_page()->findChild<QPushButton*>("continue")) {
       ADD_FAILURE() << "trial " << index << " (" << ms::to_string(w.controller()->session().current().type)
-                    << ") was not answered";
+                    << ") was not answered; error: "
+                    << (w.findChild<QLabel*>("error") ? w.findChild<QLabel*>("error")->text().toStdString() : "")
+                    << "; hint: "
+                    << (w.trial_view() && w.trial_view()->findChild<QLabel*>("hint")
+                            ? w.trial_view()->findChild<QLabel*>("hint")->text().toStdString() : "");
       return false;
     }
   }
