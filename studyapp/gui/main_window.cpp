@@ -1,10 +1,12 @@
 // MainWindow: pages of the participant's window, driven by StudyController signals.
 #include "studyapp/gui/main_window.hpp"
 
-#include <QFileInfo>
+#include <QShortcut>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QVBoxLayout>
+
+#include <filesystem>
 
 #include "studyapp/core/autopilot.hpp"
 #include "studyapp/gui/experimenter_window.hpp"
@@ -29,6 +31,10 @@ QWidget* message_page(const QString& text, QLabel** label, QPushButton** button,
   (*button)->setDefault(true);
   layout->addWidget(*button, 0, Qt::AlignCenter);
   layout->addStretch();
+  for (const auto key : {Qt::Key_Return, Qt::Key_Enter, Qt::Key_Space}) {
+    auto* shortcut = new QShortcut(QKeySequence(key), page);
+    QObject::connect(shortcut, &QShortcut::activated, *button, &QPushButton::click);
+  }
   return page;
 }
 
@@ -136,6 +142,9 @@ void MainWindow::load_protocol(const QString& path) {
 
 void MainWindow::start() {
   if (!controller_ || !controller_->is_prepared()) return;
+  const std::filesystem::path db = start_page_->db_path().toStdString();
+  std::error_code ignored;  // an unusable folder is reported by the store, naming the file
+  if (db.has_parent_path()) std::filesystem::create_directories(db.parent_path(), ignored);
   try {
     controller_->start_session(start_page_->participant().toStdString(), start_page_->db_path().toStdString());
   } catch (const std::exception& e) {

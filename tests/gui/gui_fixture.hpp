@@ -224,7 +224,9 @@ inline bool drive(ms::gui::MainWindow& w, DriveLog& log, int max_trials = 1000,
     if (auto* resume = page->findChild<QPushButton*>("continue")) {
       ++log.breaks;
       if (before) before(ms::BlockType::unknown, w);  // the break page
-      QTest::mouseClick(resume, Qt::LeftButton);
+      QTest::keyClick(page, Qt::Key_Return);          // Enter continues
+      if (w.current_page() == page) QTest::mouseClick(resume, Qt::LeftButton);
+      else log.used_keys = true;
       continue;
     }
     if (log.trials >= max_trials) return false;

@@ -64,7 +64,9 @@ TEST(SessionDrive, WholeDemoSessionThroughTheViews) {
 
 TEST(SessionDrive, AdjustResynthesisesWithin50msOfASliderMove) {
   const std::string dir = fresh_dir("adjust");
-  ms::gui::MainWindow w(demo_options("P02", dir + "/results.sqlite"));
+  ms::gui::AppOptions options = demo_options("P02", dir + "/results.sqlite");
+  options.cache_dir = dir + "/cache";  // empty: each slider position is synthesised, not read back from disk
+  ms::gui::MainWindow w(options);
   ASSERT_TRUE(start_window(w));
   DriveLog log;
   // Answer up to the adjust trial, then measure ten moves there.
