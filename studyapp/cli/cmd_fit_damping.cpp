@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "studyapp/cli/fittable_law.hpp"
 #include "analysis/damping_features.hpp"
 #include "analysis/damping_fit.hpp"
 #include "analysis/emg_likelihood.hpp"
@@ -59,15 +60,8 @@ void register_fit_damping(CLI::App& app) {
   cmd->add_flag("--json", opt->json, "Print one JSON object");
   cmd->callback([opt] {
     // Validate the options before reading anything, so a typo fails fast and names the option.
-    DampingKind law{};
+    const DampingKind law = parse_fittable_law(opt->law);
     DampingEstimator estimator{};
-    try {
-      law = parse_damping_kind(opt->law);
-      law_param_count(law);  // constant_q is a law but not a fittable one
-    } catch (const std::invalid_argument&) {
-      throw InputError(SourceLocation{"--law", 0, 0},
-                       "unknown law '" + opt->law + "' (expected rayleigh, powerlaw or hybrid)");
-    }
     try {
       estimator = parse_damping_estimator(opt->estimator);
     } catch (const std::invalid_argument& e) {

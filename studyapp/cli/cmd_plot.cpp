@@ -11,6 +11,7 @@
 #include <numbers>
 #include <random>
 
+#include "studyapp/cli/fittable_law.hpp"
 #include "analysis/damping_features.hpp"
 #include "analysis/damping_fit.hpp"
 #include "analysis/emg_likelihood.hpp"
@@ -279,14 +280,7 @@ void register_plot(CLI::App& app) {
   damping_cmd->add_flag("--linear", opt->linear, "Linear axes (default: log-log)");
   damping_cmd->callback([opt] {
     plots::check_output_path(opt->output);
-    DampingKind law{};
-    try {
-      law = parse_damping_kind(opt->law);
-      law_param_count(law);  // constant_q is a law but not a fittable one
-    } catch (const std::invalid_argument&) {
-      throw InputError(SourceLocation{"--law", 0, 0},
-                       "unknown law '" + opt->law + "' (expected rayleigh, powerlaw or hybrid)");
-    }
+    const DampingKind law = parse_fittable_law(opt->law);
     const auto features = read_damping_features_csv(opt->features);
     std::size_t needed = 0;
     for (auto e : {DampingEstimator::lsq, DampingEstimator::lb, DampingEstimator::emg})

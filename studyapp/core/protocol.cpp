@@ -33,7 +33,10 @@ std::vector<StimulusRef> Block::referenced() const {
   auto add_pairs = [&](const std::vector<StimulusPair>& pairs) {
     for (const auto& p : pairs) out.insert(out.end(), p.begin(), p.end());
   };
-  if (const auto* ab = std::get_if<AbBlock>(&body)) add_pairs(ab->pairs);
+  if (const auto* ab = std::get_if<AbBlock>(&body)) {
+    add_pairs(ab->pairs);
+    out.insert(out.end(), ab->references.begin(), ab->references.end());
+  }
   if (const auto* m = std::get_if<MushraBlock>(&body)) {
     if (m->reference) out.push_back(*m->reference);
     out.insert(out.end(), m->conditions.begin(), m->conditions.end());

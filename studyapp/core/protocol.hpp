@@ -42,9 +42,12 @@ enum class AbMode { same_different, preference, abx, two_afc, bipolar };
 std::string to_string(AbMode m);
 
 struct InstructionsBlock { std::string text; };
+// A pair written as a triple [A, B, REF] (not in ABX) also plays REF after A and B: e.g. the recording
+// against which two synthesis methods are compared on the bipolar -3..+3 scale.
 struct AbBlock {
   AbMode mode = AbMode::same_different;
   std::vector<StimulusPair> pairs;
+  std::vector<StimulusRef> references;  // empty, or one per pair
 };
 struct MushraBlock {
   std::optional<StimulusRef> reference;
@@ -55,6 +58,7 @@ struct MushraBlock {
 struct MagnitudeBlock {
   std::optional<StimulusPair> modulus;
   bool all_pairs = false;            // every unordered pair of `stimuli`
+  bool identical_pairs = false;      // with all_pairs: also each stimulus against itself (2002 study)
   std::vector<StimulusPair> pairs;
   std::vector<StimulusRef> stimuli;
 };

@@ -131,7 +131,23 @@ BlockBody parse_body(const YamlReader& r, const YAML::Node& n, const std::string
         }
         ab.mode = static_cast<AbMode>(it - modes.begin());
       }
-      ab.pairs = pairs(r, n["pairs"], p + ".pairs");
+      // Pairs [A, B] or, for every pair alike, triples [A, B, REF] with a reference to compare against.
+      const YAML::Node ps = n["pairs"];
+      if (ps && !ps.IsSequence()) r.fail(ps, p + ".pairs", "expected a list of pairs [[a, b], ...]");
+      for (std::size_t i = 0; ps && i < ps.size(); ++i) {
+        const std::string ip = idx(p + ".pairs", i);
+        const YAML::Node item = ps[i];
+        const bool triple = item.IsSequence() && item.size() == 3;
+        if (triple && ab.mode == AbMode::abx) r.fail(item, ip, "ABX plays X; a pair takes no reference");
+        if (i > 0 && triple != !ab.references.empty())
+          r.fail(item, ip, "write every pair of the block as [a, b] or every one as [a, b, reference]");
+        if (!triple) {
+          ab.pairs.push_back(pair(r, item, ip));
+          continue;
+        }
+        ab.pairs.push_back({ref(r, item[0], idx(ip, 0)), ref(r, item[1], idx(ip, 1))});
+        ab.references.push_back(ref(r, item[2], idx(ip, 2)));
+      }
       return ab;
     }
     case BlockType::mushra: {
@@ -153,8 +169,13 @@ BlockBody parse_body(const YamlReader& r, const YAML::Node& n, const std::string
       g.modulus = pair(r, req("modulus"), p + ".modulus");
       g.stimuli = refs(r, n["stimuli"], p + ".stimuli");
       const YAML::Node pr = n["pairs"];
-      if (!pr || (pr.IsScalar() && pr.Scalar() == "all")) g.all_pairs = true;
-      else g.pairs = pairs(r, pr, p + ".pairs");
+      if (!pr || (pr.IsScalar() && pr.Scalar() == "all")) {
+        g.all_pairs = true;
+      } else if (pr.IsScalar() && pr.Scalar() == "all_with_identical") {
+        g.all_pairs = g.identical_pairs = true;
+      } else {
+        g.pairs = pairs(r, pr, p + ".pairs");
+      }
       return g;
     }
     case BlockType::identify: {

@@ -2,7 +2,8 @@
 // that an answer fits its trial before it is committed:
 //   instructions   "ok"
 //   ab             same_different: "same" | "different"; preference, abx, 2afc: "A" | "B"
-//                  (abx: the one that is X); bipolar: integer -3..3 (B compared with A)
+//                  (abx: the one that is X); bipolar: integer -3..3 (B compared with A; with a
+//                  block reference: positive when B is closer to the reference)
 //   mushra         {"<stimulus>": 0..100, ...} for every stimulus of the trial (hidden reference too)
 //   magnitude      number > 0 (the pair's dissimilarity, the modulus pair being 100)
 //   identify       one of the block's labels

@@ -61,6 +61,12 @@ void add_pair_trials(std::vector<Trial>& out, const Trial& proto, const std::vec
     }
 }
 
+// A, B, then the pair's reference.
+void add_reference(Trial& t, const std::string& reference) {
+  t.reference = reference;
+  t.stimuli.push_back(reference);
+}
+
 void add_single_trials(std::vector<Trial>& out, const Trial& proto, const std::vector<StimulusRef>& stimuli,
                        int repeats) {
   for (int rep = 0; rep < repeats; ++rep)
@@ -81,6 +87,8 @@ std::vector<Trial> block_trials(const Block& b, std::size_t block_index, std::mt
   std::vector<Trial> out;
   if (const auto* ab = std::get_if<AbBlock>(&b.body)) {
     add_pair_trials(out, proto, ab->pairs, b.repeats, b.randomize, ab->mode == AbMode::abx, rng);
+    if (!ab->references.empty())  // trials come out pair by pair, repeat by repeat
+      for (std::size_t k = 0; k < out.size(); ++k) add_reference(out[k], ab->references[k % ab->references.size()].name);
   } else if (const auto* m = std::get_if<MushraBlock>(&b.body)) {
     for (int rep = 0; rep < b.repeats; ++rep) {
       Trial t = proto;
@@ -98,7 +106,8 @@ std::vector<Trial> block_trials(const Block& b, std::size_t block_index, std::mt
     std::vector<StimulusPair> pairs = g->pairs;
     if (g->all_pairs)
       for (std::size_t i = 0; i < g->stimuli.size(); ++i)
-        for (std::size_t j = i + 1; j < g->stimuli.size(); ++j) pairs.push_back({g->stimuli[i], g->stimuli[j]});
+        for (std::size_t j = g->identical_pairs ? i : i + 1; j < g->stimuli.size(); ++j)
+          pairs.push_back({g->stimuli[i], g->stimuli[j]});
     add_pair_trials(out, proto, pairs, b.repeats, b.randomize, false, rng);
   } else if (const auto* i = std::get_if<IdentifyBlock>(&b.body)) {
     add_single_trials(out, proto, i->stimuli, b.repeats);

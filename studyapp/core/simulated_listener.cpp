@@ -85,6 +85,10 @@ SimulatedAnswer SimulatedListener::answer(const Block& block, const Trial& trial
         a.value = d > 1.0 ? "different" : "same";
       } else if (mode == AbMode::abx) {
         a.value = noisy(distance_db(s.at(0), s.at(2))) <= noisy(distance_db(s.at(1), s.at(2))) ? "A" : "B";
+      } else if (mode == AbMode::bipolar && !trial.reference.empty()) {
+        // B against A as a match to the reference: positive when B sounds closer to it.
+        const double gain = noisy(distance_db(s.at(0), trial.reference)) - noisy(distance_db(s.at(1), trial.reference));
+        a.value = int(std::lround(clamp(gain / 2.0, -3.0, 3.0)));
       } else if (mode == AbMode::bipolar) {
         a.value = int(std::lround(clamp(-d / 2.0 + 0.5 * unit(rng_), -3.0, 3.0)));
       } else {  // preference, 2afc: the brighter sound (higher loudness-weighted Bark centroid)

@@ -1,5 +1,6 @@
 // A/B trials: same/different, preference, ABX ("X is A / X is B"), 2AFC, and the bipolar -3..+3 comparison
-// of B with A (seven radio buttons). Answers per response_format.hpp.
+// of B with A (seven radio buttons) — against the pair's reference when the protocol gives one ([A, B, REF]:
+// the reference is played after A and B, and +3 means B is much closer to it). Answers per response_format.hpp.
 #include <QRadioButton>
 
 #include "studyapp/gui/trial_view.hpp"
@@ -16,18 +17,23 @@ class AbView : public TrialView {
     mode_ = body ? body->mode : AbMode::same_different;
     c.set_sounds(sounds_of(c, trial.stimuli));
     QStringList labels{"A", "B"};
-    if (trial.stimuli.size() > 2) labels << "X";
+    const bool with_reference = mode_ != AbMode::abx && trial.stimuli.size() > 2;
+    if (trial.stimuli.size() > 2) labels << (with_reference ? "Reference" : "X");
     switch (mode_) {
       case AbMode::same_different: add_prompt("Are A and B the same or different?"); break;
       case AbMode::preference: add_prompt("Which sound do you prefer?"); break;
       case AbMode::abx: add_prompt("Is X the same as A or the same as B?"); break;
       case AbMode::two_afc: add_prompt("Which of the two sounds is the different one (the target)?"); break;
-      case AbMode::bipolar: add_prompt("Compared with A, how is B? (-3 much worse ... +3 much better)"); break;
+      case AbMode::bipolar:
+        add_prompt(with_reference ? "Which of A and B is closer to the reference? (-3: A much closer ... +3: B much closer)"
+                                  : "Compared with A, how is B? (-3 much worse ... +3 much better)");
+        break;
     }
+    if (with_reference && mode_ != AbMode::bipolar) add_prompt("The reference plays after A and B.");
     add_sound_buttons(labels, false);
     if (mode_ == AbMode::bipolar) {
       auto* row = new QHBoxLayout;
-      row->addWidget(new QLabel("much worse", this));
+      row->addWidget(new QLabel(with_reference ? "A much closer" : "much worse", this));
       bipolar_ = new QButtonGroup(this);
       for (int v = -3; v <= 3; ++v) {
         auto* r = new QRadioButton(v > 0 ? QString("+%1").arg(v) : QString::number(v), this);
@@ -35,7 +41,7 @@ class AbView : public TrialView {
         bipolar_->addButton(r, v);
         row->addWidget(r);
       }
-      row->addWidget(new QLabel("much better", this));
+      row->addWidget(new QLabel(with_reference ? "B much closer" : "much better", this));
       connect(bipolar_, &QButtonGroup::idClicked, this, [this] { refresh(); });
       layout_->addLayout(row);
     } else if (mode_ == AbMode::same_different) {

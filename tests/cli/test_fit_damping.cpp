@@ -142,7 +142,7 @@ TEST_F(FitDampingCli, NegativeDecay) {
 
 TEST_F(FitDampingCli, NonNumericCell) {
   const std::string f = write("f.csv", "sound,freq_hz,decay_per_s,amp\nsA,100,1,1\nsB,2k,2,1\n");
-  expect_rejected("'" + f + "' --law hybrid --estimator lsq", f + ":3:4", "freq_hz: expected a number, got '2k'");
+  expect_rejected("'" + f + "' --law hybrid --estimator lsq", f + ":3:4", "column 'freq_hz': expected a number, got '2k'");
 }
 
 TEST_F(FitDampingCli, FewerPointsThanParameters) {

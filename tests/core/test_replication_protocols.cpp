@@ -1,0 +1,204 @@
+// The shipped replication protocols (protocols/*.yaml other than demo): each validates with no
+// problem, and each keeps the design numbers of the paper it replicates (see its header comment).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <set>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "studyapp/core/autopilot.hpp"
+#include "studyapp/core/protocol_parser.hpp"
+#include "studyapp/core/protocol_validator.hpp"
+#include "studyapp/core/schedule.hpp"
+#include "support/test_util.hpp"
+
+namespace {
+
+const std::vector<std::string> kReplications = {"vandendoel2002", "sterling2019", "ren2013_materials",
+                                                "ab_synthesis_methods"};
+
+std::string protocol_path(const std::string& name) {
+  return std::string(MODALSTUDY_SOURCE_DIR) + "/protocols/" + name + ".yaml";
+}
+
+ms::Protocol load(const std::string& name) {
+  std::vector<std::string> problems;
+  ms::Protocol p = ms::load_protocol(protocol_path(name), &problems);
+  EXPECT_TRUE(problems.empty()) << name << ": " << (problems.empty() ? "" : problems.front());
+  return p;
+}
+
+const ms::Block& block(const ms::Protocol& p, const std::string& id) {
+  const auto it = std::find_if(p.blocks.begin(), p.blocks.end(), [&](const ms::Block& b) { return b.id == id; });
+  if (it == p.blocks.end()) throw std::runtime_error("no block '" + id + "' in " + p.file);
+  return *it;
+}
+
+// Test trials (not training) of one block in a participant's schedule.
+std::vector<ms::Trial> trials_of(const ms::Schedule& s, const std::string& block_id) {
+  std::vector<ms::Trial> out;
+  for (const auto& t : s.trials)
+    if (t.block_id == block_id) out.push_back(t);
+  return out;
+}
+
+std::vector<std::string> names(const std::vector<ms::StimulusRef>& refs) {
+  std::vector<std::string> out;
+  for (const auto& r : refs) out.push_back(r.name);
+  return out;
+}
+
+TEST(ReplicationProtocols, EachValidatesWithNoProblem) {
+  for (const auto& name : kReplications) {
+    const ms::ProtocolCheck check = ms::check_protocol_file(protocol_path(name));
+    std::string all;
+    for (const auto& p : check.problems) all += p + "\n";
+    EXPECT_TRUE(check.problems.empty()) << all;
+    EXPECT_TRUE(check.protocol.has_value()) << name;
+  }
+}
+
+// van den Doel et al. 2002: a_v staircase from 20 dB in -1 dB steps against the unpruned model;
+// same/different token ladders; magnitude estimation of every pair of 11 tokens + the reference.
+TEST(ReplicationProtocols, VanDenDoel2002KeepsThePapersDesign) {
+  const ms::Protocol p = load("vandendoel2002");
+  for (const std::string object : {"vase", "bowl"}) {
+    const auto& s = std::get<ms::StaircaseBlock>(block(p, "av-" + object).body);
+    EXPECT_EQ(s.parameter, "prune.threshold_db");
+    EXPECT_DOUBLE_EQ(s.start, 20.0);
+    EXPECT_DOUBLE_EQ(s.step, -1.0);  // lower a_v prunes more: the easier direction
+    EXPECT_EQ(s.stimulus.name, object + "-av");
+  }
+  const ms::Schedule schedule = ms::make_schedule(p, "P01");
+  for (const std::string object : {"vase", "bowl"})
+    for (const std::string method : {"naive", "energy"}) {
+      const auto& g = std::get<ms::MagnitudeBlock>(block(p, "dissimilarity-" + object + "-" + method).body);
+      ASSERT_TRUE(g.modulus.has_value());
+      EXPECT_EQ((*g.modulus)[0].name, object + "-full");  // the standard pair: reference and one mode
+      EXPECT_EQ((*g.modulus)[1].name, object + (method == "naive" ? "-n1" : "-e1"));
+      EXPECT_TRUE(g.all_pairs);
+      EXPECT_EQ(g.stimuli.size(), 12u);  // 11 tokens + the reference
+      const auto trials = trials_of(schedule, "dissimilarity-" + object + "-" + method);
+      EXPECT_EQ(trials.size(), 78u);  // C(12, 2) distinct + 12 identical pairs, as in the paper
+      std::set<std::set<std::string>> distinct;
+      std::size_t identical = 0;
+      for (const auto& t : trials) {
+        distinct.insert({t.stimuli[0], t.stimuli[1]});
+        identical += t.stimuli[0] == t.stimuli[1];
+      }
+      EXPECT_EQ(distinct.size(), 78u);
+      EXPECT_EQ(identical, 12u);
+
+      const auto& ab = std::get<ms::AbBlock>(block(p, "tokens-" + object + "-" + method).body);
+      EXPECT_EQ(ab.mode, ms::AbMode::same_different);
+      EXPECT_EQ(ab.pairs.size(), 13u);  // 11 neighbouring pairs + 2 identical catch pairs
+    }
+}
+
+// Sterling et al. 2019: 4 datasets x 2 shapes x 5 materials; shape and material identification;
+// duration, ringiness, tonality and pitch on 7-point scales (tonality: mixed tones .. pure tone).
+TEST(ReplicationProtocols, Sterling2019KeepsThePapersDesign) {
+  const ms::Protocol p = load("sterling2019");
+  const auto& material = std::get<ms::IdentifyBlock>(block(p, "material").body);
+  EXPECT_EQ(material.labels, (std::vector<std::string>{"wood", "metal", "plastic", "glass", "porcelain"}));
+  EXPECT_EQ(material.stimuli.size(), 40u);
+  std::set<std::string> datasets, shapes, materials;
+  for (const auto& s : names(material.stimuli)) {
+    const auto a = s.find('-'), b = s.find('-', a + 1);
+    datasets.insert(s.substr(0, a));
+    shapes.insert(s.substr(a + 1, b - a - 1));
+    materials.insert(s.substr(b + 1));
+  }
+  EXPECT_EQ(datasets.size(), 4u);
+  EXPECT_EQ(shapes, (std::set<std::string>{"disc", "rod"}));
+  EXPECT_EQ(materials.size(), 5u);
+  const auto& shape = std::get<ms::IdentifyBlock>(block(p, "shape").body);
+  EXPECT_EQ(shape.labels, (std::vector<std::string>{"disc", "rod"}));
+  EXPECT_EQ(names(shape.stimuli), names(material.stimuli));
+
+  const auto& ratings = std::get<ms::RatingBlock>(block(p, "ratings").body);
+  EXPECT_EQ(names(ratings.stimuli), names(material.stimuli));
+  std::vector<std::string> attributes;
+  for (const auto& a : ratings.attributes) {
+    attributes.push_back(a.name);
+    EXPECT_EQ(a.points, 7) << a.name;
+    EXPECT_FALSE(a.low.empty() || a.high.empty()) << a.name;
+    if (a.name == "tonality") {
+      EXPECT_EQ(a.low, "mixed tones");
+      EXPECT_EQ(a.high, "pure tone");
+    }
+  }
+  EXPECT_EQ(attributes, (std::vector<std::string>{"duration", "ringiness", "tonality", "pitch"}));
+  const ms::Schedule s = ms::make_schedule(p, "P01");
+  EXPECT_EQ(trials_of(s, "material").size() + trials_of(s, "shape").size() + trials_of(s, "ratings").size(), 120u);
+}
+
+// Ren et al. 2013: 16 synthesised clips (3 shapes x 4 materials + 4 glass bowls), five labels; the
+// plates are named as their label so the plate confusion matrix reads directly.
+TEST(ReplicationProtocols, Ren2013KeepsThePapersDesign) {
+  const ms::Protocol p = load("ren2013_materials");
+  const auto& id = std::get<ms::IdentifyBlock>(block(p, "material").body);
+  EXPECT_EQ(id.labels, (std::vector<std::string>{"wood", "plastic", "metal", "porcelain", "glass"}));
+  EXPECT_EQ(id.stimuli.size(), 16u);
+  std::map<std::string, int> per_label;
+  for (const auto& s : names(id.stimuli)) {
+    const std::string truth = s.substr(0, s.find('-'));
+    EXPECT_NE(std::find(id.labels.begin(), id.labels.end(), truth), id.labels.end()) << s;
+    ++per_label[truth];
+  }
+  for (const auto& label : id.labels) {
+    EXPECT_EQ(per_label[label], label == "glass" ? 4 : 3) << label;  // 3 shapes, or 4 glass bowl sizes
+    EXPECT_NE(p.find_stimulus(label), nullptr) << label;  // the label-named plate (glass: the size-1 bowl)
+  }
+  EXPECT_EQ(trials_of(ms::make_schedule(p, "P01"), "material").size(), 16u);
+}
+
+// Skandalou & Ireland 2017: -3..+3 comparison of sinusoidal vs filter-based synthesis, each pair
+// written [sinusoidal, filter-based] (positive = filter-based better), recordings as reference.
+TEST(ReplicationProtocols, SynthesisMethodsAbIsBipolar) {
+  const ms::Protocol p = load("ab_synthesis_methods");
+  const auto& ab = std::get<ms::AbBlock>(block(p, "methods").body);
+  EXPECT_EQ(ab.mode, ms::AbMode::bipolar);
+  EXPECT_EQ(ab.pairs.size(), 10u);  // 5 objects x 2 areas
+  for (const auto& pr : ab.pairs) {
+    EXPECT_EQ(pr[0].name.substr(0, 4), "sin-");
+    EXPECT_EQ(pr[1].name.substr(0, 4), "bpf-");
+    EXPECT_EQ(pr[0].name.substr(4), pr[1].name.substr(4));  // same object and area
+    const ms::StimulusSource* rec = p.find_stimulus("rec-" + pr[0].name.substr(4));
+    ASSERT_NE(rec, nullptr) << pr[0].name;
+    EXPECT_EQ(rec->kind, ms::StimulusKind::file);
+  }
+  // Each pair carries its object's recording as the reference, played after A and B.
+  ASSERT_EQ(ab.references.size(), ab.pairs.size());
+  for (std::size_t i = 0; i < ab.pairs.size(); ++i) EXPECT_EQ(ab.references[i].name, "rec-" + ab.pairs[i][0].name.substr(4));
+  for (const auto& t : trials_of(ms::make_schedule(p, "P01"), "methods")) {
+    ASSERT_EQ(t.stimuli.size(), 3u);
+    EXPECT_EQ(t.stimuli[2], t.reference);
+    EXPECT_EQ(t.reference.substr(4), t.stimuli[0].substr(4));
+  }
+}
+
+// The simulated listener runs each whole session (as `studyapp --autopilot` would) and answers every
+// trial: the protocols are runnable end to end, stimuli, recordings and staircases included.
+TEST(ReplicationProtocols, AutopilotAnswersEveryTrial) {
+  for (const auto& name : kReplications) {
+    const ms::test::TempDir dir;
+    ms::AutopilotOptions o;
+    o.protocol_path = protocol_path(name);
+    o.participant = "P01";
+    o.db_path = dir.file(name + ".sqlite");
+    o.cache_dir = dir.file("cache");
+    o.seed = 1;
+    const ms::AutopilotSummary s = ms::run_autopilot(o);
+    EXPECT_TRUE(s.finished) << name;
+    EXPECT_FALSE(s.resumed) << name;
+    EXPECT_GT(s.total, 0u) << name;
+    EXPECT_EQ(s.answered_now, s.total) << name;
+    EXPECT_EQ(s.total, ms::make_schedule(load(name), "P01").trials.size()) << name;
+  }
+}
+
+}  // namespace
