@@ -118,3 +118,23 @@ TEST(SessionDrive, ClosingMidSessionResumesAtTheFirstUnansweredTrial) {
   EXPECT_TRUE(notice->isVisible());
   EXPECT_TRUE(notice->text().contains("trial 5 of")) << notice->text().toStdString();
 }
+
+// The shipped replications with few trials, whole sessions through the same views: the A/B comparison
+// with a reference per pair (bipolar -3..+3) and the five-material identification.
+class ShippedProtocol : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(ShippedProtocol, WholeSessionThroughTheViews) {
+  const std::string name = GetParam();
+  const std::string dir = fresh_dir("shipped-" + name);
+  ms::gui::AppOptions options = demo_options("P05", dir + "/results.sqlite");
+  options.protocol_path = std::string(MODALSTUDY_SOURCE_DIR) + "/protocols/" + name + ".yaml";
+  ms::gui::MainWindow w(options);
+  ASSERT_TRUE(start_window(w));
+  const std::size_t total = w.controller()->session().total();
+  DriveLog log;
+  ASSERT_TRUE(drive(w, log));
+  ms::ResultsStore store(dir + "/results.sqlite", ms::ResultsStore::Mode::read_only);
+  EXPECT_EQ(store.count("responses"), static_cast<std::int64_t>(total));
+}
+
+INSTANTIATE_TEST_SUITE_P(Replications, ShippedProtocol, ::testing::Values("ab_synthesis_methods", "ren2013_materials"));
