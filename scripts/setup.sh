@@ -8,7 +8,8 @@ packages=(build-essential cmake ninja-build pkg-config
           libsndfile1-dev libeigen3-dev libboost-dev libboost-math-dev libfftw3-dev libyaml-cpp-dev
           libcli11-dev nlohmann-json3-dev libssl-dev libsqlite3-dev
           libgtest-dev libgmock-dev libbenchmark-dev
-          qt6-base-dev qt6-charts-dev qt6-svg-dev libgl-dev
+          qt6-base-dev qt6-charts-dev qt6-svg-dev qt6-multimedia-dev libgl-dev
+          xvfb xauth  # the GUI screenshot test runs under xvfb-run when it is there
           libqt6opengl6-dev)  # Qt6Charts' CMake config needs Qt6OpenGL; Debian 12 does not pull it in
 missing=()
 for p in "${packages[@]}"; do
