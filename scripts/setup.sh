@@ -10,6 +10,7 @@ packages=(build-essential cmake ninja-build pkg-config
           libgtest-dev libgmock-dev libbenchmark-dev
           qt6-base-dev qt6-charts-dev qt6-svg-dev qt6-multimedia-dev libgl-dev
           xvfb xauth  # the GUI screenshot test runs under xvfb-run when it is there
+          hydrogen-drumkits  # real struck-metal recordings for the model-audit tests (~140 MB)
           libqt6opengl6-dev)  # Qt6Charts' CMake config needs Qt6OpenGL; Debian 12 does not pull it in
 missing=()
 for p in "${packages[@]}"; do
