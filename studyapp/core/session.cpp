@@ -96,9 +96,10 @@ const Block& Session::current_block() const { return protocol_.blocks.at(current
 
 std::size_t Session::answered() const { return store_->answered_trials(session_).size(); }
 
-void Session::log_event(EventKind kind, const std::string& stimulus, std::int64_t now_ms) {
+void Session::log_event(EventKind kind, const std::string& stimulus, std::int64_t now_ms,
+                        const std::string& detail_json) {
   if (finished()) return;
-  store_->record_event(session_, {position_of(current()), kind, stimulus, now_ms, ""});
+  store_->record_event(session_, {position_of(current()), kind, stimulus, now_ms, detail_json});
 }
 
 void Session::answer(const nlohmann::json& value, double rt_ms, int plays, std::int64_t now_ms) {

@@ -44,8 +44,9 @@ class Session {
   // True right after answering a trial that ends a stretch of `break_after` trials.
   bool at_break() const { return at_break_; }
 
-  // Commits a play/stop/switch event of the current trial.
-  void log_event(EventKind kind, const std::string& stimulus, std::int64_t now_ms);
+  // Commits a play/stop/switch event of the current trial; `detail_json` describes a variant played
+  // (e.g. an adjust trial's slider values and recipe hash), "" for none.
+  void log_event(EventKind kind, const std::string& stimulus, std::int64_t now_ms, const std::string& detail_json = "");
 
   // Checks the answer (see response_format.hpp), commits it, then advances. Throws
   // std::invalid_argument naming the problem if the answer does not fit the trial (nothing stored).

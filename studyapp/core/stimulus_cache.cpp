@@ -11,6 +11,9 @@
 #include "synthesis/paramset.hpp"
 #include "synthesis/sha256.hpp"
 #include "synthesis/stimulus.hpp"
+#include "synthesis/yaml_reader.hpp"
+
+#include <yaml-cpp/yaml.h>
 
 namespace ms {
 
@@ -150,6 +153,28 @@ void StimulusCache::prepare_all(const std::function<void(std::size_t, std::size_
   for (const auto& s : protocol_.stimuli) {
     make(s.name);
     if (progress) progress(++done, total, s.name);
+  }
+}
+
+std::optional<double> StimulusCache::parameter_value(const std::string& name, const std::string& key) const {
+  const StimulusSource& s = source(name);
+  if (s.kind != StimulusKind::paramset) return std::nullopt;
+  const std::string path = resolve_protocol_path(protocol_, s.path);
+  try {
+    YAML::Node node = YAML::LoadFile(path);
+    apply_overrides(node, s.overrides);
+    for (std::size_t start = 0;;) {  // walk the dotted path
+      const auto dot = key.find('.', start);
+      if (!node.IsMap()) return std::nullopt;
+      node = node[key.substr(start, dot - start)];
+      if (!node) return std::nullopt;
+      if (dot == std::string::npos) break;
+      start = dot + 1;
+    }
+    if (!node.IsScalar()) return std::nullopt;
+    return node.as<double>();
+  } catch (const std::exception&) {  // YAML or conversion errors: the set itself was validated already
+    return std::nullopt;
   }
 }
 

@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,10 @@ class StimulusCache {
   // Cached by the resulting recipe hash like any other stimulus.
   Samples samples_with(const std::string& name, const std::vector<std::string>& extra_overrides);
   std::string hash_with(const std::string& name, const std::vector<std::string>& extra_overrides);
+
+  // The value a parameter-set stimulus gives a dotted key (e.g. damping.alpha1) as written in its file
+  // with the protocol's overrides; nullopt when the key is not written (e.g. it comes from a material).
+  std::optional<double> parameter_value(const std::string& name, const std::string& key) const;
 
   double sample_rate_hz() const { return sample_rate_hz_; }
   std::size_t rendered_count() const;  // renders done by this object (cache misses), for tests

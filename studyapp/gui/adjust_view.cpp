@@ -3,6 +3,8 @@
 // never blocks; moves during a render are coalesced into one more render), and the new sound plays when
 // the slider is released. The time from a move to the new sound is shown and kept in the view's
 // "resynth_ms" property; plays and time are stored with the answer.
+#include <algorithm>
+#include <cmath>
 #include <QCheckBox>
 #include <QElapsedTimer>
 #include <QGridLayout>
@@ -29,7 +31,9 @@ class AdjustView : public TrialView {
       auto* slider = new QSlider(Qt::Horizontal, this);
       slider->setObjectName(QString::fromStdString("adjust-" + s.key));
       slider->setRange(0, 100);
-      slider->setValue(50);
+      // Start where the parameter set puts the key (mid-range when it is not written, e.g. from a material).
+      const int start = start_position(c.cache(), block_.paramset.name, s);
+      slider->setValue(start);
       slider->setMinimumWidth(320);
       grid->addWidget(slider, row, 1);
       auto* value = new QLabel(this);
@@ -39,7 +43,7 @@ class AdjustView : public TrialView {
         request_render();
       });
       connect(slider, &QSlider::sliderReleased, this, [this] { play_when_ready_ = true; maybe_autoplay(); });
-      value->setText(QString::number(to_value(s, 50), 'g', 4));
+      value->setText(QString::number(to_value(s, start), 'g', 4));
       sliders_.push_back(slider);
       ++row;
     }
@@ -62,6 +66,23 @@ class AdjustView : public TrialView {
 
  private:
   static double to_value(const Slider& s, int pos) { return s.min + (s.max - s.min) * pos / 100.0; }
+
+  static int start_position(const StimulusCache& cache, const std::string& stimulus, const Slider& s) {
+    const auto v = cache.parameter_value(stimulus, s.key);
+    if (!v || s.max == s.min) return 50;
+    return std::clamp(static_cast<int>(std::lround(100.0 * (*v - s.min) / (s.max - s.min))), 0, 100);
+  }
+
+  // What the played variant was: the slider values and its recipe hash (logged with each play).
+  std::string variant_detail() const {
+    nlohmann::json d = nlohmann::json::object();
+    for (std::size_t i = 0; i < sliders_.size(); ++i) d[block_.sliders[i].key] = to_value(block_.sliders[i], sliders_[i]->value());
+    try {
+      return nlohmann::json{{"set", d}, {"hash", controller_.cache().hash_with(block_.paramset.name, overrides())}}.dump();
+    } catch (const std::exception&) {
+      return nlohmann::json{{"set", d}}.dump();
+    }
+  }
 
   std::vector<std::string> overrides() const {
     std::vector<std::string> o;
@@ -96,7 +117,7 @@ class AdjustView : public TrialView {
     setProperty("resynth_ms", latency_ms);
     setProperty("renders", property("renders").toInt() + 1);
     status_->setText(QString("re-synthesised in %1 ms (render %2 ms)").arg(latency_ms, 0, 'f', 1).arg(render_ms, 0, 'f', 1));
-    controller_.replace_sound(0, Sound{block_.paramset.name, samples});
+    controller_.replace_sound(0, Sound{block_.paramset.name, samples, variant_detail()});
     current_ok_ = true;
     maybe_autoplay();
     refresh();

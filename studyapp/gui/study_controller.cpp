@@ -112,7 +112,7 @@ void StudyController::set_loop(bool loop) { audio_->mixer().set_loop(loop); }
 void StudyController::play(std::size_t index) {
   if (index >= sounds_.size() || !has_session()) return;
   audio_->mixer().play(index);
-  session_->log_event(EventKind::play, sounds_[index].name, now_ms());
+  session_->log_event(EventKind::play, sounds_[index].name, now_ms(), sounds_[index].detail_json);
   played_.insert(index);
   ++plays_;
   emit soundPlayed(static_cast<int>(index));
@@ -122,7 +122,7 @@ void StudyController::switch_to(std::size_t index) {
   if (index >= sounds_.size() || !has_session()) return;
   if (!playing()) return play(index);
   audio_->mixer().switch_to(index);
-  session_->log_event(EventKind::switch_to, sounds_[index].name, now_ms());
+  session_->log_event(EventKind::switch_to, sounds_[index].name, now_ms(), sounds_[index].detail_json);
   played_.insert(index);
   ++plays_;
   emit soundPlayed(static_cast<int>(index));
@@ -132,7 +132,10 @@ void StudyController::stop() {
   if (!has_session()) return audio_->mixer().stop();
   const int current = playing_index();
   audio_->mixer().stop();
-  if (current >= 0) session_->log_event(EventKind::stop, sounds_[static_cast<std::size_t>(current)].name, now_ms());
+  if (current >= 0) {
+    const Sound& sound = sounds_[static_cast<std::size_t>(current)];
+    session_->log_event(EventKind::stop, sound.name, now_ms(), sound.detail_json);
+  }
 }
 
 bool StudyController::playing() const { return audio_ && audio_->mixer().playing(); }

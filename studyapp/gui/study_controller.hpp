@@ -25,6 +25,7 @@ namespace ms::gui {
 struct Sound {
   std::string name;
   Samples samples;
+  std::string detail_json = {};  // logged with its play/switch/stop events (e.g. an adjust variant's slider values)
 };
 
 class StudyController : public QObject {

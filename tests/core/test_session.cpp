@@ -56,6 +56,7 @@ TEST(Session, AnswersAreCheckedCommittedAndAdvance) {
   }
   EXPECT_EQ(s.answered(), 6u);
   EXPECT_EQ(s.store().count("responses"), 6);
+  for (const auto& e : s.store().event_rows()) EXPECT_TRUE(e.detail_json.empty()) << e.detail_json;
   EXPECT_EQ(s.store().count("events"), 5);  // instructions has no stimulus but its event still counts
   const auto summaries = s.store().session_summaries();
   ASSERT_EQ(summaries.size(), 1u);
@@ -66,6 +67,22 @@ TEST(Session, AnswersAreCheckedCommittedAndAdvance) {
       EXPECT_NE(row.hashes_json.find(cache.hash("lp")), std::string::npos);
     }
   }
+}
+
+TEST(Session, EventsCarryTheVariantPlayed) {
+  test::TempDir dir;
+  const std::string path = testing::write_small_study(dir);
+  const Protocol p = load_protocol(path);
+  StimulusCache cache(p, "");
+  Session s(p, slurp(path), "P05", dir.file("r.sqlite"), cache.hashes(), 1000);
+  s.answer("ok", 1.0, 0, 1001);
+  const std::string detail = R"({"hash":"abc","set":{"amp_scale":0.7}})";
+  s.log_event(EventKind::play, s.current().stimuli[0], 1002, detail);
+  const auto rows = s.store().event_rows();
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0].detail_json, detail);
+  EXPECT_EQ(rows[0].kind, "play");
+  EXPECT_EQ(rows[0].stimulus_hash, cache.hash(s.current().stimuli[0]));
 }
 
 TEST(Session, ReopeningResumesAtTheFirstUnansweredTrialWithTheSameSchedule) {

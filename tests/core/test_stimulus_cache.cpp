@@ -103,3 +103,20 @@ TEST(StimulusCache, SamplesWithOverridesAreCachedByTheirOwnHash) {
 
 }  // namespace
 }  // namespace ms
+
+namespace ms {
+namespace {
+
+TEST(StimulusCache, ParameterValueAsWrittenWithOverrides) {
+  test::TempDir dir;
+  const Protocol p = load_protocol(testing::write_small_study(dir));
+  StimulusCache cache(p, "");
+  EXPECT_EQ(cache.parameter_value("low", "duration_s"), 0.5);          // from the file
+  EXPECT_EQ(cache.parameter_value("lowq", "amp_scale"), 0.5);          // from the protocol's set:
+  EXPECT_FALSE(cache.parameter_value("low", "amp_scale").has_value());  // not written
+  EXPECT_FALSE(cache.parameter_value("low", "excitation").has_value()); // a map, not a number
+  EXPECT_FALSE(cache.parameter_value("lp", "duration_s").has_value());  // derived: no parameters
+}
+
+}  // namespace
+}  // namespace ms

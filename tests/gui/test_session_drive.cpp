@@ -76,6 +76,8 @@ TEST(SessionDrive, AdjustResynthesisesWithin50msOfASliderMove) {
   QWidget* view = w.trial_view();
   ASSERT_TRUE(wait_until([&] { return view->property("renders").toInt() >= 1; }));
   auto* slider = children_with_prefix<QSlider>(view, "adjust-")[0];
+  // The demo's set writes damping.alpha1 = 2.3 on the slider's [0.5, 10]: it starts there, not mid-range.
+  EXPECT_EQ(slider->value(), 19);
   std::vector<double> ms_per_move;
   for (int move = 0; move < 10; ++move) {
     const int before = view->property("renders").toInt();
@@ -88,6 +90,13 @@ TEST(SessionDrive, AdjustResynthesisesWithin50msOfASliderMove) {
   std::printf("adjust re-synthesis, slider move -> new sound ready: median %.1f ms, max %.1f ms over %zu moves\n", median,
               ms_per_move.back(), ms_per_move.size());
   EXPECT_LT(median, 50.0);
+  // Each play of a variant is logged with its slider values and recipe hash.
+  w.controller()->play(0);
+  bool logged = false;
+  for (const auto& e : w.controller()->session().store().event_rows())
+    logged = logged || (e.block_type == "adjust" && e.detail_json.find("damping.alpha1") != std::string::npos &&
+                        e.detail_json.find("\"hash\"") != std::string::npos);
+  EXPECT_TRUE(logged);
 }
 
 TEST(SessionDrive, ClosingMidSessionResumesAtTheFirstUnansweredTrial) {
