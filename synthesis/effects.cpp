@@ -1,5 +1,6 @@
 #include "synthesis/effects.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -57,6 +58,45 @@ void add_background_noise(std::vector<float>& samples, const BackgroundNoise& no
   std::mt19937_64 rng(noise.seed);
   std::normal_distribution<double> gauss(0.0, sigma);
   for (float& v : samples) v = float(v + gauss(rng));
+}
+
+double decaying_noise_variance(double direct_energy, double sample_rate_hz, std::size_t n, double t60_s,
+                               double energy_db) {
+  // sum_t exp(-2 k t) in closed form (geometric series), k = ln(1000) / t60 per sample.
+  const double r = std::exp(-2.0 * std::log(1000.0) / (t60_s * sample_rate_hz));
+  const double envelope_energy = (1.0 - std::pow(r, double(n))) / (1.0 - r);
+  return direct_energy * std::pow(10.0, energy_db / 10.0) / std::max(envelope_energy, 1e-300);
+}
+
+void add_decaying_noise(std::vector<float>& samples, double sample_rate_hz, double t60_s, double energy_db,
+                        std::uint64_t seed) {
+  if (samples.empty() || t60_s <= 0) return;
+  double energy = 0.0;
+  for (float v : samples) energy += double(v) * v;
+  const double sigma0 = std::sqrt(decaying_noise_variance(energy, sample_rate_hz, samples.size(), t60_s, energy_db));
+  const double k = std::log(1000.0) / (t60_s * sample_rate_hz);
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const double env = sigma0 * std::exp(-k * double(i));
+    if (env < 1e-12 * sigma0) break;  // 240 dB down: nothing left to add
+    samples[i] = float(samples[i] + env * gauss(rng));
+  }
+}
+
+void add_reverb_and_transient(std::vector<float>& samples, double sample_rate_hz, const Reverb& reverb,
+                              const AttackTransient& transient) {
+  const std::vector<float> direct = samples;
+  if (reverb.enabled) {
+    std::vector<float> tail(direct);
+    add_decaying_noise(tail, sample_rate_hz, reverb.rt60_s, reverb.level_db, reverb.seed);
+    for (std::size_t i = 0; i < samples.size(); ++i) samples[i] += tail[i] - direct[i];
+  }
+  if (transient.enabled) {
+    std::vector<float> burst(direct);
+    add_decaying_noise(burst, sample_rate_hz, 1e-3 * transient.duration_ms, transient.level_db, transient.seed);
+    for (std::size_t i = 0; i < samples.size(); ++i) samples[i] += burst[i] - direct[i];
+  }
 }
 
 }  // namespace ms

@@ -4,6 +4,10 @@
 //    plus a one-sided excess: here a constant, per-mode values, or exponential draws (seeded).
 //  - mode doublets: a degenerate pair split by imperfection into f (1 -+ split/2), which beats.
 //  - background noise: stationary white Gaussian noise at a given SNR, as in a real recording room.
+//  - reverberation: a room tail common to all bands, white Gaussian noise decaying 60 dB in RT60
+//    independently of the modes, its energy a given level relative to the direct (modal) sound.
+//  - residual transient (Ren et al.'s residual): the non-modal noise of the contact, a white burst at
+//    the attack decaying 60 dB within a few ms, its energy relative to the direct sound.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -41,5 +45,32 @@ struct BackgroundNoise {
 
 // Adds white Gaussian noise so that sum(y^2)/sum(noise^2) equals snr_db (seeded, reproducible).
 void add_background_noise(std::vector<float>& samples, const BackgroundNoise& noise);
+
+struct Reverb {
+  double rt60_s = 0.0;      // tail decays 60 dB in this time
+  double level_db = 0.0;    // tail energy / direct energy (dB)
+  std::uint64_t seed = 0;
+  bool enabled = false;
+};
+
+struct AttackTransient {
+  double level_db = 0.0;     // burst energy / direct energy (dB)
+  double duration_ms = 0.0;  // burst decays 60 dB in this time
+  std::uint64_t seed = 0;
+  bool enabled = false;
+};
+
+// White Gaussian noise with standard deviation sigma0 exp(-ln(1000) t / t60_s) from sample 0, sigma0
+// chosen so its expected energy is energy_db relative to sum(samples^2) as given (seeded).
+void add_decaying_noise(std::vector<float>& samples, double sample_rate_hz, double t60_s, double energy_db,
+                        std::uint64_t seed);
+
+// sigma0^2 of add_decaying_noise for a direct sound of energy sum(x^2) = direct_energy over n samples.
+double decaying_noise_variance(double direct_energy, double sample_rate_hz, std::size_t n, double t60_s,
+                               double energy_db);
+
+// Both relative to the direct sound `samples` holds when called (neither sees the other's noise).
+void add_reverb_and_transient(std::vector<float>& samples, double sample_rate_hz, const Reverb& reverb,
+                              const AttackTransient& transient);
 
 }  // namespace ms

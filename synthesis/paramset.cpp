@@ -368,7 +368,34 @@ ParamSet parse_paramset(const std::string& yaml_text, const std::string& file,
 
   if (root["effects"]) {
     const YAML::Node fx = root["effects"];
-    r.check_keys(fx, "effects", {"support_damping", "doublets", "noise"});
+    r.check_keys(fx, "effects", {"support_damping", "doublets", "noise", "reverb", "transient"});
+    if (fx["reverb"]) {
+      const YAML::Node n = fx["reverb"];
+      r.check_keys(n, "effects.reverb", {"rt60_s", "level_db", "seed"});
+      if (!n["rt60_s"]) r.fail(n, "effects.reverb", "needs 'rt60_s'");
+      if (!n["level_db"]) r.fail(n, "effects.reverb", "needs 'level_db'");
+      p.reverb.rt60_s = r.positive(n["rt60_s"], "effects.reverb.rt60_s");
+      if (p.reverb.rt60_s > 20) r.fail(n["rt60_s"], "effects.reverb.rt60_s", "must lie in (0, 20] s");
+      p.reverb.level_db = r.number(n["level_db"], "effects.reverb.level_db");
+      if (!(p.reverb.level_db >= -120 && p.reverb.level_db <= 20))
+        r.fail(n["level_db"], "effects.reverb.level_db", "must lie in [-120, 20] dB");
+      if (n["seed"]) p.reverb.seed = std::uint64_t(r.integer(n["seed"], "effects.reverb.seed"));
+      p.reverb.enabled = true;
+    }
+    if (fx["transient"]) {
+      const YAML::Node n = fx["transient"];
+      r.check_keys(n, "effects.transient", {"level_db", "duration_ms", "seed"});
+      if (!n["level_db"]) r.fail(n, "effects.transient", "needs 'level_db'");
+      if (!n["duration_ms"]) r.fail(n, "effects.transient", "needs 'duration_ms'");
+      p.transient.level_db = r.number(n["level_db"], "effects.transient.level_db");
+      if (!(p.transient.level_db >= -120 && p.transient.level_db <= 20))
+        r.fail(n["level_db"], "effects.transient.level_db", "must lie in [-120, 20] dB");
+      p.transient.duration_ms = r.positive(n["duration_ms"], "effects.transient.duration_ms");
+      if (p.transient.duration_ms > 100)
+        r.fail(n["duration_ms"], "effects.transient.duration_ms", "must lie in (0, 100] ms (a longer burst is not an attack)");
+      if (n["seed"]) p.transient.seed = std::uint64_t(r.integer(n["seed"], "effects.transient.seed"));
+      p.transient.enabled = true;
+    }
     if (fx["noise"]) {
       const YAML::Node n = fx["noise"];
       r.check_keys(n, "effects.noise", {"snr_db", "seed"});
@@ -516,6 +543,11 @@ std::string canonical_recipe(const ParamSet& p) {
       p.level.attack_window_s);
   add("format %s\n", to_string(p.format).c_str());
   if (p.noise.enabled) add("noise %.17g %llu\n", p.noise.snr_db, (unsigned long long)p.noise.seed);
+  if (p.reverb.enabled)
+    add("reverb %.17g %.17g %llu\n", p.reverb.rt60_s, p.reverb.level_db, (unsigned long long)p.reverb.seed);
+  if (p.transient.enabled)
+    add("transient %.17g %.17g %llu\n", p.transient.level_db, p.transient.duration_ms,
+        (unsigned long long)p.transient.seed);
   add("modes %zu\n", p.model.modes.size());
   for (const Mode& m : p.model.modes)
     add("%.17g %.17g %.17g %.17g\n", m.freq_hz, m.decay_per_s, m.amp, m.phase_rad);

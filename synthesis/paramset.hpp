@@ -20,6 +20,8 @@ struct ParamSet {
   ModalModel model;              // resolved modes, support damping and doublets applied
   Excitation excitation;
   OutputLevel level;
+  Reverb reverb;                 // added after rendering (relative to the direct sound), before noise
+  AttackTransient transient;     // likewise
   BackgroundNoise noise;         // added after rendering, before the output level
   SampleFormat format = SampleFormat::float32;
   std::string description;       // free text

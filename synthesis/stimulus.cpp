@@ -24,6 +24,7 @@ RenderedStimulus render_stimulus(const ParamSet& p) {
   out.audio.sample_rate_hz = p.sample_rate_hz;
   out.audio.channels = 1;
   out.audio.samples = render_bank(model, p.excitation, p.sample_rate_hz, frames);
+  add_reverb_and_transient(out.audio.samples, p.sample_rate_hz, p.reverb, p.transient);
   add_background_noise(out.audio.samples, p.noise);
   out.level_gain = level_gain(out.audio.samples, p.sample_rate_hz, p.level);
   if (out.level_gain != 1.0)

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "synthesis/effects.hpp"
 #include "synthesis/excitation.hpp"
 #include "synthesis/resonator_bank.hpp"
 
@@ -63,7 +64,26 @@ ModalModel strike_model(const AuditModel& model, std::size_t s) {
   return out;
 }
 
-BarkSpectrogram predict_spectrogram(const AuditModel& model, const AuditData& data, std::size_t s) {
+void add_decaying_noise_power(BarkSpectrogram& spec, const SpectrogramGrid& g, double direct_energy, double t60_s,
+                              double energy_db) {
+  if (t60_s <= 0.0) return;
+  const std::size_t n = g.frames == 0 ? 0 : (g.frames - 1) * g.hop + g.window;
+  const double var0 = decaying_noise_variance(direct_energy, g.sample_rate_hz, n, t60_s, energy_db);
+  // Per bin, white noise of variance v_i gives E|X|^2 = sum_i w_i^2 v_i; v_i falls by r per sample.
+  const double r = std::exp(-2.0 * std::log(1000.0) / (t60_s * g.sample_rate_hz));
+  double frame0 = 0.0, ri = 1.0;
+  for (std::size_t i = 0; i < g.window; ++i, ri *= r) {
+    const double w = 0.5 - 0.5 * std::cos(2.0 * M_PI * double(i) / double(g.window));
+    frame0 += w * w * ri;
+  }
+  const double per_hop = std::pow(r, double(g.hop));
+  double level = var0 * frame0;
+  for (std::size_t f = 0; f < spec.frames && level > 0.0; ++f, level *= per_hop)
+    for (std::size_t b = 0; b < spec.bands; ++b) spec.at(f, b) += level * double(g.band_bins[b]);
+}
+
+BarkSpectrogram predict_spectrogram(const AuditModel& model, const AuditData& data, std::size_t s,
+                                    double* direct_energy) {
   const MeasuredStrikes& ms_ = data.measured;
   ModalModel modal = strike_model(model, s);
   drop_modes_at_or_above(modal, 0.5 * ms_.sample_rate_hz);
@@ -71,6 +91,11 @@ BarkSpectrogram predict_spectrogram(const AuditModel& model, const AuditData& da
   const std::size_t samples = ms_.strikes[s].samples.size();
   const std::vector<float> y = render_bank(modal, impulse, ms_.sample_rate_hz, samples);
   BarkSpectrogram spec = bark_spectrogram(y, ms_.grid);
+  double energy = 0.0;
+  for (float v : y) energy += double(v) * double(v);
+  if (direct_energy) *direct_energy = energy;
+  add_decaying_noise_power(spec, ms_.grid, energy, model.reverb_rt60_s, model.reverb_level_db);
+  add_decaying_noise_power(spec, ms_.grid, energy, 1e-3 * model.transient_ms, model.transient_level_db);
   if (!model.noise_band_power.empty())
     for (std::size_t f = 0; f < spec.frames; ++f)
       for (std::size_t b = 0; b < spec.bands; ++b) spec.at(f, b) += model.noise_band_power[b];

@@ -1,6 +1,7 @@
 // The model an audit compares with the recordings: modes (each tied to a measured track or not), a
 // damping law, a gain per strike, and the extensions the named effects add (per-strike support
-// damping, per-strike contact durations, doublet splits, a stationary noise floor).
+// damping, per-strike contact durations, doublet splits, a stationary noise floor, a room tail and an
+// attack transient).
 #pragma once
 #include <cstddef>
 #include <string>
@@ -35,6 +36,10 @@ struct AuditModel {
   double contact_gain_ref = 1.0;
   double contact_exponent = 0.0;
   std::vector<double> noise_band_power;  // noise_floor: per Bark band (empty: none)
+  double reverb_rt60_s = 0.0;            // reverberation: white tail decaying 60 dB in this (0: none)
+  double reverb_level_db = 0.0;          // ... its energy relative to the strike's direct sound
+  double transient_ms = 0.0;             // residual_transient: white burst decaying 60 dB in this (0: none)
+  double transient_level_db = 0.0;       // ... its energy relative to the strike's direct sound
   std::vector<std::string> effects;      // named, in order
 };
 
@@ -58,8 +63,15 @@ ModalModel strike_model(const AuditModel& model, std::size_t strike);
 // Decay of mode n in strike s (law or given decay plus support excess).
 double strike_decay(const AuditModel& model, std::size_t strike, std::size_t mode);
 
-// Bark spectrogram the model predicts for strike s (rendered on the data's grid, plus noise power).
-BarkSpectrogram predict_spectrogram(const AuditModel& model, const AuditData& data, std::size_t strike);
+// Bark spectrogram the model predicts for strike s (rendered on the data's grid, plus the expected
+// power of its noises); direct_energy (if given) receives sum(y^2) of the rendered modes.
+BarkSpectrogram predict_spectrogram(const AuditModel& model, const AuditData& data, std::size_t strike,
+                                    double* direct_energy = nullptr);
+
+// Adds the expected band power of synthesis/effects' decaying noise (t60_s, energy_db relative to a
+// direct sound of energy direct_energy) to a spectrogram on `grid` (noise starting at sample 0).
+void add_decaying_noise_power(BarkSpectrogram& spec, const SpectrogramGrid& grid, double direct_energy,
+                              double t60_s, double energy_db);
 
 // Gap of strike s between the model and the measurement.
 GapMap strike_gap(const AuditModel& model, const AuditData& data, std::size_t strike);

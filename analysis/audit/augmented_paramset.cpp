@@ -59,7 +59,8 @@ std::string augmented_paramset_yaml(const AuditData& data, const AuditModel& mod
     add("excitation: {type: impulse}\n");
   }
   const bool support = !model.extra_decay_per_s.empty(), noise = !model.noise_band_power.empty();
-  if (support || noise) add("effects:\n");
+  const bool reverb = model.reverb_rt60_s > 0.0, transient = model.transient_ms > 0.0;
+  if (support || noise || reverb || transient) add("effects:\n");
   if (support) {
     y += "  support_damping:\n    per_mode_decay_per_s: [";
     for (std::size_t i = 0; i < extra.size(); ++i) add("%s%.6g", i ? ", " : "", extra[i]);
@@ -71,10 +72,16 @@ std::string augmented_paramset_yaml(const AuditData& data, const AuditModel& mod
     double power = 0.0;
     for (float v : x) power += double(v) * double(v);
     power /= double(std::max<std::size_t>(x.size(), 1));
+    // The tail and the burst are part of the signal effects.noise is relative to.
+    if (reverb) power *= 1.0 + std::pow(10.0, model.reverb_level_db / 10.0);
+    if (transient) power *= 1.0 + std::pow(10.0, model.transient_level_db / 10.0);
     const double sigma = noise_white_sigma(data, model);
     const double snr = std::clamp(10.0 * std::log10(power / std::max(sigma * sigma, 1e-30)), -20.0, 200.0);
     add("  noise: {snr_db: %.4g, seed: 1}\n", snr);
   }
+  if (reverb) add("  reverb: {rt60_s: %.6g, level_db: %.6g, seed: 1}\n", model.reverb_rt60_s, model.reverb_level_db);
+  if (transient)
+    add("  transient: {level_db: %.6g, duration_ms: %.6g, seed: 1}\n", model.transient_level_db, model.transient_ms);
   y += "level: {normalize: none}\noutput: {format: float32}\n";
   return y;
 }

@@ -35,6 +35,8 @@ Effect damping_law_effect();
 Effect mode_doublet_effect();
 Effect contact_duration_effect();
 Effect noise_floor_effect();
+Effect reverberation_effect();
+Effect residual_transient_effect();
 
 // Every effect, in a fixed order (ties in improvement go to the earlier one).
 std::vector<Effect> effect_catalog();

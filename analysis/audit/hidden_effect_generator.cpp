@@ -6,13 +6,15 @@
 #include <random>
 #include <stdexcept>
 
+#include "synthesis/effects.hpp"
 #include "synthesis/excitation.hpp"
 #include "synthesis/resonator_bank.hpp"
 
 namespace ms::audit {
 
 std::vector<std::string> hideable_effects() {
-  return {"support_damping", "damping_law", "mode_doublet", "contact_duration", "noise_floor"};
+  return {"support_damping",    "damping_law", "mode_doublet", "contact_duration", "noise_floor", "reverberation",
+          "residual_transient"};
 }
 
 namespace {
@@ -129,6 +131,23 @@ HiddenCase generate_hidden_case(std::uint64_t seed, const std::vector<std::strin
     hc.summary += buf;
   }
   const double sigma = 0.3 * std::pow(10.0, -noise_below_db / 20.0);
+  // The later effects draw from their own generator: cases hiding only the first five stay as they were.
+  std::mt19937_64 rng2(seed * 1000003u + 11u);
+  // reverberation: a white tail of RT60 0.2-0.8 s, -48 .. -34 dB re the direct sound (louder tails
+  // bury the faint modes the extraction needs).
+  Reverb reverb;
+  if (has(effects, "reverberation")) {
+    reverb = {0.2 + 0.6 * U(rng2), -48.0 + 14.0 * strength_of(effects, strengths, "reverberation"), 0, true};
+    std::snprintf(buf, sizeof buf, "; reverb RT60 %.2f s at %.1f dB", reverb.rt60_s, reverb.level_db);
+    hc.summary += buf;
+  }
+  // residual_transient: a white burst decaying 60 dB in 3-10 ms, -30 .. -15 dB re the direct sound.
+  AttackTransient transient;
+  if (has(effects, "residual_transient")) {
+    transient = {-30.0 + 15.0 * strength_of(effects, strengths, "residual_transient"), 3.0 + 7.0 * U(rng2), 0, true};
+    std::snprintf(buf, sizeof buf, "; transient %.1f ms at %.1f dB", transient.duration_ms, transient.level_db);
+    hc.summary += buf;
+  }
 
   const std::size_t pre = std::size_t(opt.pre_roll_s * fs), frames = std::size_t(opt.duration_s * fs);
   std::normal_distribution<double> N(0.0, 1.0);
@@ -157,7 +176,9 @@ HiddenCase generate_hidden_case(std::uint64_t seed, const std::vector<std::strin
       e.contact_s = tau_hard * std::pow(hc.strike_gain[s] / gmax, -p);
     }
     drop_modes_at_or_above(m, 0.5 * fs);
-    const std::vector<float> y = render_bank(m, e, fs, frames);
+    std::vector<float> y = render_bank(m, e, fs, frames);
+    reverb.seed = transient.seed = seed * 131u + s;
+    add_reverb_and_transient(y, fs, reverb, transient);
     Recording r;
     r.name = "strike" + std::to_string(s + 1);
     r.sample_rate_hz = fs;

@@ -1,9 +1,12 @@
 // Hidden-effect cases for the audit tests: which effects a seed hides, with what strength, and the
 // bookkeeping of what the audit named (confusion matrix, detection rates, gap shrink).
-//  - tuning: seeds 1000-1059, strengths on the grid {0.1, 0.3, 0.5, 0.7, 0.9}; the detector
-//    thresholds in analysis/audit/effect_*.cpp were chosen on these (DISABLED_AuditTuning prints them);
-//  - test:   seeds 5000-5119, strengths drawn uniformly from (0, 1) off that grid (disjoint).
+//  - tuning: seeds 1000-1059 (the first five effects) and 1100-1179 (added with reverberation and
+//    residual_transient; the new thresholds came from 1100-1116 and 1140-1156), strengths on the grid {0.1, 0.3, 0.5, 0.7, 0.9}; the detector thresholds in
+//    analysis/audit/effect_*.cpp were chosen on these (DISABLED_AuditTuning prints them);
+//  - test:   seeds 7000-7159, strengths drawn uniformly from (0, 1) off that grid (disjoint). Seeds
+//    5000-5119 were the five-effect catalog's held-out range and are not reused.
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -23,9 +26,19 @@ struct CasePlan {
   std::vector<double> strengths;
 };
 
-// Case i of a run: every 8 cases, 2 clean, 5 with one effect each, 1 with a random pair.
+// Effects the runs hide: all the generator can hide but reverberation. Its tail makes the feature
+// extraction find dozens of spurious modes (78 for a 13-mode object) and a case take ~45 s, so it is
+// not in the held-out run (README says so); its detector still runs on every case.
+inline std::vector<std::string> planned_effects() {
+  std::vector<std::string> all;
+  for (const std::string& e : audit::hideable_effects())
+    if (e != "reverberation") all.push_back(e);
+  return all;
+}
+
+// Case i of a run: every (effects + 3) cases, 2 clean, one with each effect, 1 with a random pair.
 inline CasePlan plan_case(std::uint64_t seed, std::size_t i, bool grid_strengths) {
-  const std::vector<std::string> all = audit::hideable_effects();
+  const std::vector<std::string> all = planned_effects();
   std::mt19937_64 rng(seed * 7919u + 17u);
   std::uniform_real_distribution<double> U(0.0, 1.0);
   auto strength = [&] {
@@ -37,11 +50,11 @@ inline CasePlan plan_case(std::uint64_t seed, std::size_t i, bool grid_strengths
   };
   CasePlan p;
   p.seed = seed;
-  const std::size_t k = i % 8;
-  if (k >= 2 && k <= 6) {
+  const std::size_t k = i % (all.size() + 3);
+  if (k >= 2 && k < all.size() + 2) {
     p.effects = {all[k - 2]};
     p.strengths = {strength()};
-  } else if (k == 7) {
+  } else if (k == all.size() + 2) {
     const std::size_t a = rng() % all.size();
     std::size_t b = rng() % (all.size() - 1);
     if (b >= a) ++b;
@@ -57,6 +70,8 @@ struct Tally {
   std::map<std::string, int> hidden, hit;
   int clean = 0, clean_quiet = 0;
   int with_effect = 0, shrunk = 0;
+  // The same over cases hiding no residual_transient (a burst of a few ms barely moves the gap).
+  int with_gap_effect = 0, gap_shrunk = 0;
   std::vector<double> shrink;
 
   void add(const CasePlan& plan, const audit::AuditResult& r) {
@@ -79,10 +94,14 @@ struct Tally {
     const double s = r.gap_before_db > 0 ? 1.0 - r.gap_after_db / r.gap_before_db : 0.0;
     shrink.push_back(s);
     shrunk += s >= 0.5;
+    if (std::find(plan.effects.begin(), plan.effects.end(), "residual_transient") == plan.effects.end()) {
+      ++with_gap_effect;
+      gap_shrunk += s >= 0.5;
+    }
   }
 
   void print() const {
-    std::vector<std::string> cols = audit::hideable_effects();
+    std::vector<std::string> cols = audit::hideable_effects();  // columns: everything the audit can name
     cols.push_back("none");
     std::printf("confusion (rows: hidden, columns: named; a case with two effects counts in both rows)\n%-17s", "");
     for (const auto& c : cols) std::printf("%17s", c.c_str());
@@ -101,7 +120,8 @@ struct Tally {
       std::printf("%-17s named in %d of %d cases where hidden (%.0f %%)\n", e.c_str(), hit.count(e) ? hit.at(e) : 0, n,
                   100.0 * (hit.count(e) ? hit.at(e) : 0) / n);
     std::printf("clean: nothing named in %d of %d (%.0f %%)\n", clean_quiet, clean, clean ? 100.0 * clean_quiet / clean : 0.0);
-    std::printf("gap shrinks by >= 50 %% in %d of %d cases with an effect\n", shrunk, with_effect);
+    std::printf("gap shrinks by >= 50 %% in %d of %d cases with an effect (%d of %d without residual_transient)\n",
+                shrunk, with_effect, gap_shrunk, with_gap_effect);
   }
 };
 

@@ -106,6 +106,29 @@ TEST(AuditBaseline, CleanStrikesAreExplainedAndTheModelRendersFromYaml) {
   EXPECT_NEAR(gap_map(data.measured.strikes[s].spectrogram, spec).gap_db, r.after[s].gap_db, 0.05);
 }
 
+// The reverberation and residual_transient extensions: the expected band power the model adds is what
+// `modalstudy synth` renders from the augmented parameter set (one noise draw: within 0.5 dB).
+TEST(AuditBaseline, ReverbAndTransientExtensionsRenderFromYaml) {
+  const HiddenCase hc = generate_hidden_case(77, {}, {});
+  const AuditData data = make_audit_data(hc.recordings);
+  const AuditResult r = run_audit(data);
+  AuditModel m = r.final_model;
+  m.reverb_rt60_s = 0.6;
+  m.reverb_level_db = -25.0;
+  m.transient_ms = 5.0;
+  m.transient_level_db = -15.0;
+  const std::string yaml = augmented_paramset_yaml(data, m, "test");
+  EXPECT_NE(yaml.find("reverb: {rt60_s: 0.6, level_db: -25, seed: 1}"), std::string::npos) << yaml;
+  EXPECT_NE(yaml.find("transient: {level_db: -15, duration_ms: 5, seed: 1}"), std::string::npos) << yaml;
+  const ParamSet p = parse_paramset(yaml, "model.yaml", ".");
+  const std::size_t s = representative_strike(m);
+  const BarkSpectrogram rendered = bark_spectrogram(render_stimulus(p).audio.samples, data.measured.grid);
+  const BarkSpectrogram predicted = predict_spectrogram(m, data, s);
+  EXPECT_LT(gap_map(predicted, rendered).gap_db, 0.5);
+  // ... and it is a real change: the tail and burst move the model's spectrogram by decibels.
+  EXPECT_GT(gap_map(predict_spectrogram(r.final_model, data, s), predicted).gap_db, 2.0);
+}
+
 TEST(AuditBaseline, NamedEffectsRenderFromYaml) {
   const HiddenCase hc = generate_hidden_case(91, {"support_damping", "noise_floor"}, {0.6, 0.8});
   const AuditData data = make_audit_data(hc.recordings);

@@ -1,11 +1,15 @@
-// Effects: support damping (one-sided excess decay) and split doublets (beating).
+// Effects: support damping (one-sided excess decay), split doublets (beating), background noise, and
+// the decaying noises of a room tail (reverb) and an attack transient.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "synthesis/effects.hpp"
 #include "synthesis/paramset.hpp"
+#include "synthesis/input_error.hpp"
 #include "synthesis/reference_renderer.hpp"
+#include "synthesis/stimulus.hpp"
 
 using namespace ms;
 
@@ -85,4 +89,68 @@ TEST(BackgroundNoise, SnrIsAsAskedAndSeeded) {
                                     "effects: {noise: {snr_db: 40, seed: 3}}\n", "n.yaml", ".");
   EXPECT_TRUE(p.noise.enabled);
   EXPECT_EQ(p.noise.snr_db, 40.0);
+}
+
+namespace {
+// Energy of x[from, to) (clamped to x's length).
+double energy_of(const std::vector<float>& x, std::size_t from, std::size_t to) {
+  double e = 0.0;
+  for (std::size_t i = from; i < std::min(to, x.size()); ++i) e += double(x[i]) * x[i];
+  return e;
+}
+std::vector<float> difference(const std::vector<float>& a, const std::vector<float>& b) {
+  std::vector<float> d(a.size());
+  for (std::size_t i = 0; i < a.size(); ++i) d[i] = a[i] - b[i];
+  return d;
+}
+}  // namespace
+
+TEST(ReverbAndTransient, LevelAndDecayAreAsAskedAndSeeded) {
+  const double fs = 44100.0;
+  std::vector<float> y(std::size_t(2 * fs));
+  for (std::size_t n = 0; n < y.size(); ++n) y[n] = float(0.5 * std::exp(-3.0 * n / fs) * std::sin(2 * M_PI * 440.0 * n / fs));
+  std::vector<float> a = y, b = y;
+  add_reverb_and_transient(a, fs, Reverb{0.5, -20.0, 4, true}, AttackTransient{});
+  add_reverb_and_transient(b, fs, Reverb{0.5, -20.0, 4, true}, AttackTransient{});
+  EXPECT_EQ(a, b);
+  const std::vector<float> tail = difference(a, y);
+  EXPECT_NEAR(10 * std::log10(energy_of(tail, 0, tail.size()) / energy_of(y, 0, y.size())), -20.0, 0.3);
+  // 60 dB in 0.5 s: the energy of [0.25, 0.35) s lies 30 dB below that of [0, 0.1) s.
+  const std::size_t t10 = std::size_t(0.1 * fs);
+  EXPECT_NEAR(10 * std::log10(energy_of(tail, 0, t10) / energy_of(tail, std::size_t(0.25 * fs), std::size_t(0.25 * fs) + t10)),
+              30.0, 0.6);
+  std::vector<float> c = y;
+  add_reverb_and_transient(c, fs, Reverb{}, AttackTransient{-10.0, 5.0, 2, true});
+  const std::vector<float> burst = difference(c, y);
+  EXPECT_NEAR(10 * std::log10(energy_of(burst, 0, burst.size()) / energy_of(y, 0, y.size())), -10.0, 0.5);
+  EXPECT_EQ(energy_of(burst, std::size_t(0.03 * fs), burst.size()), 0.0);  // gone after 30 ms (6 x 60 dB)
+}
+
+TEST(ReverbAndTransient, ParameterSetKeysRenderChangeTheHashAndFailWithLocation) {
+  const std::string base = "duration_s: 1\nmodes: [{freq_hz: 440, decay_per_s: 1, amp: 1}]\nlevel: {normalize: none}\n";
+  const ParamSet plain = parse_paramset(base, "r.yaml", ".");
+  const ParamSet p = parse_paramset(base + "effects: {reverb: {rt60_s: 0.8, level_db: -25, seed: 3}, "
+                                           "transient: {level_db: -15, duration_ms: 4, seed: 5}}\n", "r.yaml", ".");
+  EXPECT_TRUE(p.reverb.enabled);
+  EXPECT_EQ(p.reverb.rt60_s, 0.8);
+  EXPECT_EQ(p.reverb.level_db, -25.0);
+  EXPECT_EQ(p.transient.duration_ms, 4.0);
+  EXPECT_EQ(p.transient.seed, 5u);
+  EXPECT_NE(p.recipe_hash, plain.recipe_hash);
+  const RenderedStimulus r0 = render_stimulus(plain), r1 = render_stimulus(p);
+  EXPECT_GT(energy_of(difference(r1.audio.samples, r0.audio.samples), 0, r0.audio.samples.size()), 0.0);
+  auto error_of = [&](const std::string& fx) {
+    try {
+      parse_paramset(base + fx, "r.yaml", ".");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(error_of("effects: {reverb: {rt60_s: -1, level_db: -20}}\n").find("r.yaml:4:28"), std::string::npos)
+      << error_of("effects: {reverb: {rt60_s: -1, level_db: -20}}\n");
+  EXPECT_NE(error_of("effects: {reverb: {rt60_s: 1}}\n").find("needs 'level_db'"), std::string::npos);
+  EXPECT_NE(error_of("effects: {transient: {level_db: 0, duration_ms: 500}}\n").find("(0, 100] ms"), std::string::npos);
+  EXPECT_NE(error_of("effects: {transient: {level_db: 0, duration: 5}}\n").find("did you mean 'duration_ms'"),
+            std::string::npos);
 }
