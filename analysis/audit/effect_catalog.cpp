@@ -29,4 +29,17 @@ double median(std::vector<double> v) {
   return v.size() % 2 ? v[h] : 0.5 * (v[h - 1] + v[h]);
 }
 
+Detection detect_by_gap_improvement(const AuditData& data, const AuditModel& current,
+                                    void (*extend)(const AuditData&, AuditModel&, const std::vector<std::size_t>&),
+                                    double min_improvement_db, GapEvidence evidence) {
+  AuditModel with = current;
+  extend(data, with, all_strikes(data));
+  const double before = mean_gap(current, data), after = mean_gap(with, data);
+  Detection d;
+  d.statistic = before - after;
+  d.passes = d.statistic >= min_improvement_db;
+  d.evidence = evidence(with, before, after);
+  return d;
+}
+
 }  // namespace ms::audit

@@ -49,6 +49,13 @@ constexpr double kMinStrikeVariationDb = 0.1;  // tuning seeds: clean 0.00, weak
 std::vector<std::size_t> strikes_present(const ModeTrack& track);
 double median(std::vector<double> v);
 
+// A detector whose statistic is the in-sample gap improvement of the effect's extension fitted on all
+// strikes: passes at >= min_improvement_db; `evidence(with, before_db, after_db)` writes the sentence.
+using GapEvidence = std::string (*)(const AuditModel& with, double before_db, double after_db);
+Detection detect_by_gap_improvement(const AuditData& data, const AuditModel& current,
+                                    void (*extend)(const AuditData&, AuditModel&, const std::vector<std::size_t>&),
+                                    double min_improvement_db, GapEvidence evidence);
+
 }  // namespace ms::audit
 
 namespace ms::audit {

@@ -35,17 +35,15 @@ void extend(const AuditData& data, AuditModel& model, const std::vector<std::siz
 }
 
 Detection detect(const AuditData& data, const AuditModel& current) {
-  Detection d;
-  AuditModel with = current;
-  extend(data, with, all_strikes(data));
-  const double before = mean_gap(current, data), after = mean_gap(with, data);
-  d.statistic = before - after;
-  d.passes = d.statistic >= kMinGapImprovementDb;
-  char buf[300];
-  std::snprintf(buf, sizeof buf, "the decayed tails stay at a stationary floor the model lacks; adding it per "
-                "Bark band lowers the gap from %.2f to %.2f dB", before, after);
-  d.evidence = buf;
-  return d;
+  return detect_by_gap_improvement(data, current, extend, kMinGapImprovementDb,
+                                   [](const AuditModel&, double before, double after) {
+                                     char buf[300];
+                                     std::snprintf(buf, sizeof buf,
+                                                   "the decayed tails stay at a stationary floor the model lacks; "
+                                                   "adding it per Bark band lowers the gap from %.2f to %.2f dB",
+                                                   before, after);
+                                     return std::string(buf);
+                                   });
 }
 
 // White-noise standard deviation with the same total power (full scale 1).

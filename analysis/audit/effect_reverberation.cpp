@@ -26,18 +26,16 @@ void extend(const AuditData& data, AuditModel& model, const std::vector<std::siz
 }
 
 Detection detect(const AuditData& data, const AuditModel& current) {
-  Detection d;
-  AuditModel with = current;
-  extend(data, with, all_strikes(data));
-  const double before = mean_gap(current, data), after = mean_gap(with, data);
-  d.statistic = before - after;
-  d.passes = d.statistic >= kMinGapImprovementDb;
-  char buf[300];
-  std::snprintf(buf, sizeof buf, "a tail common to all bands decays independently of the modes (RT60 %.2f s, "
-                "%.1f dB re the direct sound); adding it lowers the gap from %.2f to %.2f dB",
-                with.reverb_rt60_s, with.reverb_level_db, before, after);
-  d.evidence = buf;
-  return d;
+  return detect_by_gap_improvement(data, current, extend, kMinGapImprovementDb,
+                                   [](const AuditModel& with, double before, double after) {
+                                     char buf[300];
+                                     std::snprintf(buf, sizeof buf,
+                                                   "a tail common to all bands decays independently of the modes "
+                                                   "(RT60 %.2f s, %.1f dB re the direct sound); adding it lowers "
+                                                   "the gap from %.2f to %.2f dB",
+                                                   with.reverb_rt60_s, with.reverb_level_db, before, after);
+                                     return std::string(buf);
+                                   });
 }
 
 Parameters parameters(const AuditData&, const AuditModel& model) {
