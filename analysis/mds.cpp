@@ -160,6 +160,20 @@ Eigen::MatrixXd disparities(const PairOrder& o, const Eigen::MatrixXd& d) {
   return dhat;
 }
 
+// Start `start` of a multi-start fit, centred: the classical solution first, then uniform draws.
+Eigen::MatrixXd start_configuration(const Eigen::MatrixXd& dissimilarity, int dims, int start, std::mt19937_64& rng,
+                                    std::uniform_real_distribution<double>& u) {
+  Eigen::MatrixXd x;
+  if (start == 0) {
+    x = classical_mds(dissimilarity, dims).points;
+  } else {
+    x.resize(dissimilarity.rows(), dims);
+    for (Eigen::Index i = 0; i < x.size(); ++i) x.data()[i] = u(rng);
+  }
+  x.rowwise() -= x.colwise().mean();
+  return x;
+}
+
 double nonmetric_stress1(const Eigen::MatrixXd& dhat, const Eigen::MatrixXd& d) {
   return std::sqrt((d - dhat).squaredNorm() / d.squaredNorm());
 }
@@ -175,14 +189,7 @@ SmacofResult smacof_nonmetric(const Eigen::MatrixXd& dissimilarity, const Smacof
   std::uniform_real_distribution<double> u(-1, 1);
   Eigen::MatrixXd bx(n, n);
   for (int start = 0; start <= options.random_starts; ++start) {
-    Eigen::MatrixXd x;
-    if (start == 0) {
-      x = classical_mds(dissimilarity, options.dims).points;
-    } else {
-      x.resize(n, options.dims);
-      for (Eigen::Index i = 0; i < x.size(); ++i) x.data()[i] = u(rng);
-    }
-    x.rowwise() -= x.colwise().mean();
+    Eigen::MatrixXd x = start_configuration(dissimilarity, options.dims, start, rng, u);
     // Start at the scale of the normalised disparities.
     x *= std::sqrt(double(order.pairs.size()) / (0.5 * pairwise_distances(x).squaredNorm()));
     Eigen::MatrixXd d = pairwise_distances(x);
@@ -221,7 +228,6 @@ SmacofResult smacof_nonmetric(const Eigen::MatrixXd& dissimilarity, const Smacof
 }
 
 SmacofResult smacof(const Eigen::MatrixXd& dissimilarity, const SmacofOptions& options) {
-  const Eigen::Index n = dissimilarity.rows();
   SmacofResult best;
   best.raw_stress = std::numeric_limits<double>::infinity();
   std::mt19937_64 rng(options.seed);
@@ -229,14 +235,7 @@ SmacofResult smacof(const Eigen::MatrixXd& dissimilarity, const SmacofOptions& o
   const double scale = dissimilarity.maxCoeff();
   std::uniform_real_distribution<double> u(-scale, scale);
   for (int start = 0; start <= options.random_starts; ++start) {
-    Eigen::MatrixXd x;
-    if (start == 0) {
-      x = classical_mds(dissimilarity, options.dims).points;
-    } else {
-      x.resize(n, options.dims);
-      for (Eigen::Index i = 0; i < x.size(); ++i) x.data()[i] = u(rng);
-    }
-    x.rowwise() -= x.colwise().mean();
+    Eigen::MatrixXd x = start_configuration(dissimilarity, options.dims, start, rng, u);
     int iterations = 0;
     const double s = smacof_run(dissimilarity, x, options, iterations);
     if (s < best.raw_stress) {
