@@ -3,8 +3,9 @@
 //  - tuning: seeds 1000-1059 (the first five effects) and 1100-1179 (added with reverberation and
 //    residual_transient; the new thresholds came from 1100-1116 and 1140-1156), strengths on the grid {0.1, 0.3, 0.5, 0.7, 0.9}; the detector thresholds in
 //    analysis/audit/effect_*.cpp were chosen on these (DISABLED_AuditTuning prints them);
-//  - test:   seeds 7000-7159, strengths drawn uniformly from (0, 1) off that grid (disjoint). Seeds
-//    5000-5119 were the five-effect catalog's held-out range and are not reused.
+//  - test:   seeds 8000-8159, strengths drawn uniformly from (0, 1) off that grid (disjoint). Seeds
+//    7000-7159 (before the scatter-weighted damping_law detector) and 5000-5119 (the five-effect
+//    catalog) were earlier held-out ranges and are not reused.
 #pragma once
 #include <algorithm>
 #include <cmath>

@@ -17,12 +17,13 @@
 namespace ms::test {
 namespace {
 
-// Effects below the 90 % bar on seeds 7000-7159, with the share they reach (README says so):
-// damping_law 15 of 20 (75 %): weak hybrid laws on clean objects stay under the tuned threshold.
-const std::vector<std::pair<std::string, double>> kMissedBars = {{"damping_law", 0.75}};
-// Over the cases hiding no residual_transient the gap shrinks by half in 92 of 103 (89 %, just under
-// the 90 % bar: strong contacts and doublets beside another effect keep part of their gap).
-constexpr double kGapShrinkBar = 0.89;
+// Effects below the 90 % bar on seeds 8000-8159, with the share they reach (README says so):
+// residual_transient 20 of 23 (87 %): weak bursts beside a louder effect, or named as damping_law
+// (a burst at the attack biases the early decays). damping_law, below the bar on 7000-7159 (75 %),
+// reaches 22 of 22 with the scatter-weighted detector.
+const std::vector<std::pair<std::string, double>> kMissedBars = {{"residual_transient", 0.86}};
+// Over the cases hiding no residual_transient the gap shrinks by half in 98 of 101 (97 %): the bar.
+constexpr double kGapShrinkBar = 0.9;
 
 audit::AuditResult audit_case(const CasePlan& plan) {
   const audit::HiddenCase hc = audit::generate_hidden_case(plan.seed, plan.effects, plan.strengths);
@@ -58,13 +59,14 @@ TEST(AuditHidden, DISABLED_AuditTuning) {
   EXPECT_GT(tally.clean, 0);
 }
 
-// Seeds 7000-7159: fresh for the seven-effect catalog (5000-5119 held out the five-effect one).
+// Seeds 8000-8159: fresh when the damping_law detector changed (7000-7159 held out the first
+// seven-effect catalog, 5000-5119 the five-effect one; neither is reused).
 TEST(AuditHidden, HeldOutSeedsMeetTheBars) {
   Tally tally;
   const auto t0 = std::chrono::steady_clock::now();
   const std::size_t cases = 160;
   for (std::size_t i = 0; i < cases; ++i) {
-    const CasePlan plan = plan_case(7000 + i, i, false);
+    const CasePlan plan = plan_case(8000 + i, i, false);
     const auto r = audit_case(plan);
     if (std::getenv("AUDIT_VERBOSE")) print_case(plan, r);
     tally.add(plan, r);
@@ -81,10 +83,10 @@ TEST(AuditHidden, HeldOutSeedsMeetTheBars) {
   }
   EXPECT_GE(double(tally.clean_quiet), 0.9 * tally.clean);
   // With an effect present the gap shrinks by at least half in at least 90 % of the cases: missed
-  // overall (97 of 124, 78 %) because a burst of a few ms barely moves a gap of 23 ms frames (the
+  // overall (105 of 124, 85 %) because a burst of a few ms barely moves a gap of 23 ms frames (the
   // residual_transient cases start near 0.1 dB and stay there); asserted at the level reached, and
-  // at kGapShrinkBar over the cases hiding no residual_transient.
-  EXPECT_GE(double(tally.shrunk), 0.78 * tally.with_effect);
+  // at the bar over the cases hiding no residual_transient.
+  EXPECT_GE(double(tally.shrunk), 0.84 * tally.with_effect);
   EXPECT_GE(double(tally.gap_shrunk), kGapShrinkBar * tally.with_gap_effect);
 }
 
