@@ -35,12 +35,25 @@ bool matches(const Mode* m, double freq_hz) {
   return m && std::abs(m->freq_hz - freq_hz) <= std::max(1.0, 0.005 * freq_hz);
 }
 
+// Residual energy of a model against the recording, in noise variances (the recording starts at the
+// onset: render_noisy adds no lead-in).
+double residual_in_noise_variances(const std::vector<float>& x, const std::vector<Mode>& modes, double sigma) {
+  ModalModel m;
+  m.modes = modes;
+  const std::vector<double> y = render_reference(m, {}, kFs, x.size());
+  double e = 0.0;
+  for (std::size_t n = 0; n < x.size(); ++n) e += (double(x[n]) - y[n]) * (double(x[n]) - y[n]);
+  return e / (sigma * sigma);
+}
+
 TEST(FeatureExtraction, RandomImpactsAt40dBSnr) {
   std::size_t eligible = 0, found = 0, extracted = 0;
+  std::size_t explained_seeds = 0, misses_where_explained = 0;
   std::vector<double> freq_err, decay_err, amp_err;
   for (std::uint64_t seed = 1; seed <= 12; ++seed) {
     const ModalModel truth = testing::random_impact(seed);
-    const auto x = testing::render_noisy(truth, kFs, 2.0, 40.0, seed);
+    double sigma = 0.0;
+    const auto x = testing::render_noisy(truth, kFs, 2.0, 40.0, seed, 0, &sigma);
     const ExtractedFeatures got = extract_features(x, kFs);
     extracted += got.modes.size();
     double strongest = 0.0;
@@ -60,20 +73,37 @@ TEST(FeatureExtraction, RandomImpactsAt40dBSnr) {
       decay_err.push_back(std::abs(e->decay_per_s - m.decay_per_s) / m.decay_per_s);
       amp_err.push_back(std::abs(e->amp - m.amp) / m.amp);
     }
-    std::printf("seed %d: %zu/%zu found, %zu extracted, noise %.1f dB\n", int(seed), case_found,
-                case_eligible, got.modes.size(), got.noise_floor_db);
+    // Is a miss the extractor's fault or the data's? Compare how well the extracted modes and the
+    // true modes explain the recording: when the extracted model's residual is no larger than the
+    // truth's plus the Bayesian information criterion's price of ONE mode (4 ln N noise variances),
+    // the recording carries no evidence for the missed modes that a penalised fit could use.
+    const double excess = residual_in_noise_variances(x, got.modes, sigma) -
+                          residual_in_noise_variances(x, truth.modes, sigma);
+    const bool explained = excess <= 4.0 * std::log(double(x.size()));
+    explained_seeds += explained;
+    if (explained) misses_where_explained += case_eligible - case_found;
+    std::printf("seed %d: %zu/%zu found, %zu extracted, noise %.1f dB, residual vs truth %+.0f noise variances%s\n",
+                int(seed), case_found, case_eligible, got.modes.size(), got.noise_floor_db, excess,
+                explained ? " (explained as well as by the truth)" : "");
     eligible += case_eligible;
     found += case_found;
   }
   const double recall = double(found) / double(eligible);
   std::printf("recall %.4f (%zu/%zu), extracted %zu, median rel err: freq %.3g decay %.3g amp %.3g\n",
               recall, found, eligible, extracted, median(freq_err), median(decay_err), median(amp_err));
+  std::printf("%zu of %zu misses are in the %zu recordings the extracted modes explain as well as the truth\n",
+              misses_where_explained, eligible - found, explained_seeds);
   // Goal (issue 3): >= 0.95. Not reached yet: 0.898 measured on these 12 seeds (0.917 on seeds
   // 13-30). Almost every miss is a heavily damped mode (d > 100 1/s, mostly below ~450 Hz) with a
   // comparable neighbour closer than ~0.35 (d1 + d2) / 2 pi in frequency: overlapping Lorentzians
   // that merge into one fitted mode, or pairs (|df| < 0.1 (d1 + d2) / 2 pi) that no estimator
   // separates at this SNR. This bound guards the level reached.
   EXPECT_GE(recall, 0.89);
+  // 31 of the 51 misses lie in 8 recordings that the extracted modes already explain as well as the
+  // true modes do (residual within one mode's BIC price): there the data do not ask for the missed
+  // modes. The other 20 (seeds 1, 2, 4, 5) are fit failures (local minima of the joint fit); with all
+  // of them found the recall would be 470/501 = 93.8 %, still under 95 %.
+  EXPECT_GE(explained_seeds, 8u);
   EXPECT_LE(median(freq_err), 0.0005);
   EXPECT_LE(median(decay_err), 0.03);
   EXPECT_LE(median(amp_err), 0.05);
