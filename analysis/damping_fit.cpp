@@ -361,10 +361,24 @@ DampingFit fit_damping(const std::vector<DampingPoint>& points, DampingKind law,
   int evaluations = 0;  // profile evaluations of the starts are not Newton iterations
   NewtonResult best;
   int iterations = 0;
+  EmgProblem weighted = pr;
+  // Relative noise: spread scales from a law (the model's value in scaled units, floored at 1 % of the
+  // median c so a power law near lambda = 0 keeps a spread).
+  const auto scales_from = [&](const DampingLaw& from_law) {
+    weighted.noise_scale.clear();
+    for (const DampingPoint& p : points)
+      weighted.noise_scale.push_back(std::max(damping_c_per_s(from_law, p.lambda_rad2_s2) / pr.c_scale, 0.01));
+  };
+  if (options.relative_noise) scales_from(law_from_scaled(pr, fit_law_scaled(pr, DampingEstimator::lb, &evaluations)));
   for (DampingEstimator start : {DampingEstimator::lb, DampingEstimator::lsq}) {
-    const NewtonResult r = maximise_emg(pr, emg_start(pr, fit_law_scaled(pr, start, &evaluations)), options);
+    const NewtonResult r = maximise_emg(weighted, emg_start(pr, fit_law_scaled(pr, start, &evaluations)), options);
     iterations += r.iterations;
     if (r.loglik > best.loglik) best = r;
+  }
+  if (options.relative_noise && best.theta.size() > 0) {  // once more with scales from the fitted law
+    scales_from(law_from_scaled(pr, best.theta));
+    best = maximise_emg(weighted, best.theta, options);
+    iterations += best.iterations;
   }
   if (best.theta.size() == 0) {  // both starts non-finite: report the LB law, no likelihood
     fit.law = law_from_scaled(pr, fit_law_scaled(pr, DampingEstimator::lb, &evaluations));

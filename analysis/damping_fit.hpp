@@ -10,6 +10,7 @@
 //  emg  maximum likelihood of the exponentially modified Gaussian (Sterling et al. 2019): damped Newton
 //       (exact Hessian, Levenberg shift when not concave, Armijo backtracking) on scaled parameters
 //       with log sigma and log eta, started from the LB and the LSQ fits; the better optimum is kept.
+//       Optionally with a spread proportional to c (DampingFitOptions::relative_noise).
 #pragma once
 #include <optional>
 #include <string>
@@ -27,6 +28,13 @@ std::string to_string(DampingEstimator estimator);
 
 struct DampingFitOptions {
   int max_iterations = 200;        // Newton iterations per start (emg)
+  // emg only. false: Sterling's model, one normal spread sigma for every point. true: the spread grows
+  // in proportion to the law's value (sigma_i = sigma c(lambda_i) / median c), because measured
+  // decays err in proportion to the decay (extraction from sounds: +-0.2 1/s at c = 3 1/s, +-20 1/s at
+  // c = 300 1/s); one sigma is then set by the fast modes and swamps the support excess that fixes
+  // alpha1. The scales come from the LB law, then once more from the fitted law; sigma is reported at
+  // the median c.
+  bool relative_noise = false;
   double tolerance = 1e-11;        // stop when the Newton decrement g' H^-1 g (scaled loglik) is below
 };
 

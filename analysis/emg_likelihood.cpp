@@ -78,9 +78,6 @@ double emg_loglik_scaled(const EmgProblem& pr, const EmgVector& theta, EmgVector
   const double a = pr.law == DampingKind::powerlaw ? 0.0 : theta[0];
   const double b = pr.law == DampingKind::powerlaw ? theta[0] : theta[1];
   const double p = pr.law == DampingKind::rayleigh ? 1.0 : theta[k - 1];
-  const double q = kSqrt1_2 / sigma;               // ds/dm
-  const double es = eta * sigma, es2 = es * es;    // eta sigma, eta^2 sigma^2
-  const double B = es * kSqrt1_2;                  // ds/dlog eta
 
   const bool want_g = gradient != nullptr, want_h = hessian != nullptr;
   // Law-parameter accumulators (index 0..k-1) and the (log sigma, log eta) block.
@@ -109,8 +106,13 @@ double emg_loglik_scaled(const EmgProblem& pr, const EmgVector& theta, EmgVector
         dm[2] = b * pw * pr.log_x[i];
       }
     }
+    // Point i's spread; d log sigma_i / d log sigma = 1, so every derivative keeps its form.
+    const double sig = pr.noise_scale.empty() ? sigma : sigma * pr.noise_scale[i];
+    const double q = kSqrt1_2 / sig;               // ds/dm
+    const double es = eta * sig, es2 = es * es;    // eta sigma, eta^2 sigma^2
+    const double B = es * kSqrt1_2;                // ds/dlog eta
     const double r = pr.y[i] - m;
-    const double s = (es * sigma - r) * q;  // (eta sigma^2 - r)/(sqrt2 sigma)
+    const double s = (es * sig - r) * q;  // (eta sigma^2 - r)/(sqrt2 sigma)
     double le, t;
     log_erfc_with_slope(s, &le, &t);
     sum += log_eta - kLn2 - eta * r + 0.5 * es2 + le;

@@ -33,6 +33,9 @@ double emg_log_likelihood(const std::vector<DampingPoint>& points, const Damping
 struct EmgProblem {
   DampingKind law = DampingKind::rayleigh;
   std::vector<double> x, y, log_x;
+  // Per-point scale of the normal spread (empty: 1, Sterling's constant sigma). With it, point i's
+  // normal part has spread sigma' noise_scale[i]: heteroscedastic measurement error (see damping_fit.hpp).
+  std::vector<double> noise_scale;
   double lambda_scale = 1.0;
   double c_scale = 1.0;
 };

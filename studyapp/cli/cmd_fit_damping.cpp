@@ -1,6 +1,7 @@
 // modalstudy fit-damping FEATURES.csv --law rayleigh|powerlaw|hybrid --estimator emg|lsq|lb [--json]
-//                        [--plot-data OUT.csv]: fit a material damping law to per-mode features.
-// JSON: {"law","estimator","params":{...},"sigma","eta","loglik","iterations","seconds"}. Param keys:
+//                        [--noise constant|relative] [--plot-data OUT.csv]: fit a material damping law
+//                        to per-mode features (--noise: emg's spread, see DampingFitOptions).
+// JSON: {"law","estimator","noise","params":{...},"sigma","eta","loglik","iterations","seconds"}. Param keys:
 // alpha = alpha1 [1/s], beta = alpha2, alpha3 = exponent (rayleigh: alpha, beta; powerlaw: beta, alpha3;
 // hybrid: alpha, beta, alpha3), all for c = 2d with lambda in (rad/s)^2. sigma/eta/loglik are null for
 // lsq and lb (they estimate no noise model). seconds = wall time of the fit alone (not of reading the CSV).
@@ -48,7 +49,7 @@ std::string plot_data_csv(const std::vector<DampingFeature>& features, const std
 
 void register_fit_damping(CLI::App& app) {
   struct Options {
-    std::string features, law, estimator, plot_data;
+    std::string features, law, estimator, plot_data, noise = "constant";
     bool json = false;
   };
   auto opt = std::make_shared<Options>();
@@ -56,6 +57,9 @@ void register_fit_damping(CLI::App& app) {
   cmd->add_option("features", opt->features, "Features CSV: sound,freq_hz,decay_per_s,amp")->required();
   cmd->add_option("--law", opt->law, "rayleigh | powerlaw | hybrid")->required();
   cmd->add_option("--estimator", opt->estimator, "emg | lsq | lb")->required();
+  cmd->add_option("--noise", opt->noise,
+                  "emg's normal spread: constant (Sterling et al.) | relative (grows with the decay, for "
+                  "decays measured from sounds)");
   cmd->add_option("--plot-data", opt->plot_data, "Write data and fitted curve per point to this CSV");
   cmd->add_flag("--json", opt->json, "Print one JSON object");
   cmd->callback([opt] {
@@ -67,6 +71,12 @@ void register_fit_damping(CLI::App& app) {
     } catch (const std::invalid_argument& e) {
       throw InputError(SourceLocation{"--estimator", 0, 0}, e.what());
     }
+    if (opt->noise != "constant" && opt->noise != "relative")
+      throw InputError(SourceLocation{"--noise", 0, 0}, "unknown noise model '" + opt->noise + "' (constant, relative)");
+    if (opt->noise == "relative" && estimator != DampingEstimator::emg)
+      throw InputError(SourceLocation{"--noise", 0, 0}, "--noise relative applies to --estimator emg only");
+    DampingFitOptions fit_options;
+    fit_options.relative_noise = opt->noise == "relative";
     const auto features = read_damping_features_csv(opt->features);
     const std::size_t needed = damping_fit_param_count(law, estimator);
     if (features.size() < needed)
@@ -76,7 +86,7 @@ void register_fit_damping(CLI::App& app) {
     const auto points = damping_points(features);
 
     const auto t0 = std::chrono::steady_clock::now();
-    const DampingFit fit = fit_damping(points, law, estimator);
+    const DampingFit fit = fit_damping(points, law, estimator, fit_options);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
     if (!opt->plot_data.empty()) write_file_atomically(opt->plot_data, plot_data_csv(features, points, fit.law));
@@ -93,6 +103,8 @@ void register_fit_damping(CLI::App& app) {
     if (opt->json) {
       nlohmann::ordered_json j = {{"law", opt->law},
                           {"estimator", opt->estimator},
+                          {"noise", estimator == DampingEstimator::emg ? nlohmann::ordered_json(opt->noise)
+                                                                       : nlohmann::ordered_json(nullptr)},
                           {"params", params},
                           {"sigma", opt_json(fit.sigma_per_s)},
                           {"eta", opt_json(fit.eta_s)},
@@ -106,7 +118,8 @@ void register_fit_damping(CLI::App& app) {
               << (law == DampingKind::rayleigh   ? "alpha + beta lambda"
                   : law == DampingKind::powerlaw ? "beta omega^(2 alpha3)"
                                                  : "alpha + beta omega^(2 alpha3)")
-              << "), estimator " << opt->estimator << "\n";
+              << "), estimator " << opt->estimator
+              << (estimator == DampingEstimator::emg ? " (" + opt->noise + " noise)" : std::string()) << "\n";
     if (law != DampingKind::powerlaw) std::cout << "  alpha   (alpha1) = " << format_g(fit.law.alpha1) << " 1/s\n";
     std::cout << "  beta    (alpha2) = " << format_g(fit.law.alpha2) << "\n";
     if (law != DampingKind::rayleigh) std::cout << "  alpha3           = " << format_g(fit.law.alpha3) << "\n";

@@ -3,11 +3,13 @@
 // strike, 40 dB SNR), its modes are extracted by extract_features, and the features of 10-40 strikes
 // are fitted by each estimator. Unlike test_damping_fit.cpp (features drawn from the model), the
 // decays here carry the extractor's own errors and spurious modes.
-// What it shows: LB beats LSQ for both materials (p < 1e-8). EMG beats LSQ for steel but NOT for
-// glass: the extractor's decay errors grow with the decay (+-20 1/s around c = 300 1/s at 10 kHz,
-// +-0.2 at 100 Hz), and the published EMG's single normal sigma is then set by the fast modes
-// (sigma ~ 16 1/s), which swamps the support damping excess (~1 1/s) that fixes alpha1; the fit also
-// stops at its iteration limit. A heteroscedastic EMG (sigma growing with c) is the open fix.
+// What it shows: LB beats LSQ for both materials (p < 1e-8). The published EMG (one normal sigma)
+// beats LSQ for steel but NOT for glass: the extractor's decay errors grow with the decay (+-20 1/s
+// around c = 300 1/s at 10 kHz, +-0.2 at 100 Hz), so one sigma is set by the fast modes (~16 1/s) and
+// swamps the support damping excess (~1 1/s) that fixes alpha1 (its likelihood optimum itself is off:
+// run to convergence it puts alpha1 below zero). EMG with a spread proportional to c
+// (DampingFitOptions::relative_noise, `fit-damping --noise relative`) beats LSQ for both, with median
+// alpha1 errors of 2-3 %, as good as LB, and unlike LB it also survives low outliers.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -68,7 +70,7 @@ TEST_P(DampingFromSounds, SyntheticValidationOnExtractedFeatures) {
   const auto pool = extracted_strikes(law, 40, 2019);
   std::mt19937_64 rng(7);
   std::uniform_int_distribution<std::size_t> how_many(10, 40);
-  std::vector<double> emg, lb, lsq;
+  std::vector<double> emg, emg_rel, lb, lsq;
   for (int r = 0; r < 30; ++r) {  // 30 resamples of 10-40 strikes
     std::vector<std::size_t> ids(pool.size());
     std::iota(ids.begin(), ids.end(), std::size_t{0});
@@ -80,6 +82,10 @@ TEST_P(DampingFromSounds, SyntheticValidationOnExtractedFeatures) {
       return std::abs(fit_damping(pts, DampingKind::rayleigh, e).law.alpha1 - law.alpha1) / law.alpha1;
     };
     emg.push_back(err(DampingEstimator::emg));
+    DampingFitOptions relative;
+    relative.relative_noise = true;
+    emg_rel.push_back(std::abs(fit_damping(pts, DampingKind::rayleigh, DampingEstimator::emg, relative).law.alpha1 -
+                               law.alpha1) / law.alpha1);
     lb.push_back(err(DampingEstimator::lb));
     lsq.push_back(err(DampingEstimator::lsq));
   }
@@ -87,13 +93,16 @@ TEST_P(DampingFromSounds, SyntheticValidationOnExtractedFeatures) {
   greater.alternative = Alternative::greater;
   const double p_emg = wilcoxon_signed_rank(lsq, emg, greater).p;
   const double p_lb = wilcoxon_signed_rank(lsq, lb, greater).p;
-  std::printf("%s from extracted sounds: median rel. error alpha1  emg %.4f  lb %.4f  lsq %.4f;  "
-              "p(lsq>emg) %.2e  p(lsq>lb) %.2e\n",
-              GetParam(), median(emg), median(lb), median(lsq), p_emg, p_lb);
+  const double p_rel = wilcoxon_signed_rank(lsq, emg_rel, greater).p;
+  std::printf("%s from extracted sounds: median rel. error alpha1  emg %.4f  emg relative noise %.4f  lb %.4f  "
+              "lsq %.4f;  p(lsq>emg) %.2e  p(lsq>emg relative) %.2e  p(lsq>lb) %.2e\n",
+              GetParam(), median(emg), median(emg_rel), median(lb), median(lsq), p_emg, p_rel, p_lb);
   EXPECT_LT(p_lb, 0.01);
   EXPECT_LT(median(lb), 0.1);
+  EXPECT_LT(p_rel, 0.01);
+  EXPECT_LT(median(emg_rel), 0.1);
   if (std::string(GetParam()) == "sterling2019/steel") EXPECT_LT(p_emg, 0.01);
-  else EXPECT_GT(median(emg), median(lb));  // glass: the gap described above, kept visible
+  else EXPECT_GT(median(emg), 5.0 * median(emg_rel));  // glass: the constant-sigma failure, kept visible
 }
 
 INSTANTIATE_TEST_SUITE_P(Materials, DampingFromSounds,

@@ -41,10 +41,13 @@ DampingLaw law_of(DampingKind kind) {
 
 class EmgLikelihoodLaw : public ::testing::TestWithParam<DampingKind> {};
 
-TEST_P(EmgLikelihoodLaw, GradientAndHessianMatchFiniteDifferences) {
-  const DampingKind kind = GetParam();
+// Checked for Sterling's constant spread and for a per-point spread (relative noise: spread
+// proportional to the data, spanning two decades).
+void check_derivatives(DampingKind kind, bool per_point_spread) {
   const auto pts = emg_points(law_of(kind), 300, 7);
-  const ms::EmgProblem pr = ms::make_emg_problem(pts, kind);
+  ms::EmgProblem pr = ms::make_emg_problem(pts, kind);
+  if (per_point_spread)
+    for (double y : pr.y) pr.noise_scale.push_back(std::max(y, 0.01));
   const int k = ms::law_param_count(kind);
   // A point away from the optimum, so the gradient is O(1)..O(n) rather than ~0.
   ms::EmgVector theta(k + 2);
@@ -80,6 +83,12 @@ TEST_P(EmgLikelihoodLaw, GradientAndHessianMatchFiniteDifferences) {
       EXPECT_NEAR(H(l, j), fdh[l], 1e-6 * std::max(1.0, std::abs(fdh[l])) + 1e-11 * H.cwiseAbs().maxCoeff())
           << "Hessian " << l << "," << j;
   }
+}
+
+TEST_P(EmgLikelihoodLaw, GradientAndHessianMatchFiniteDifferences) { check_derivatives(GetParam(), false); }
+
+TEST_P(EmgLikelihoodLaw, GradientAndHessianMatchFiniteDifferencesWithPerPointSpread) {
+  check_derivatives(GetParam(), true);
 }
 
 TEST_P(EmgLikelihoodLaw, ScaledLikelihoodIsPhysicalLikelihoodUpToJacobian) {

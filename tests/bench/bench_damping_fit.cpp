@@ -31,23 +31,28 @@ std::vector<ms::DampingPoint> porcelain_features() {
   return pts;
 }
 
+// range(0): the law; range(1): 1 for a spread proportional to c (--noise relative: two weighted passes).
 void BM_EmgFitNewton(benchmark::State& state) {
   const auto pts = porcelain_features();
   const auto law = static_cast<ms::DampingKind>(state.range(0));
+  ms::DampingFitOptions options;
+  options.relative_noise = state.range(1) != 0;
   ms::DampingFit fit;
   for (auto _ : state) {
-    fit = ms::fit_damping(pts, law, ms::DampingEstimator::emg);
+    fit = ms::fit_damping(pts, law, ms::DampingEstimator::emg, options);
     benchmark::DoNotOptimize(fit);
   }
   state.counters["points"] = double(pts.size());
   state.counters["iterations"] = fit.iterations;
   state.counters["loglik"] = *fit.loglik;
-  state.SetLabel(ms::to_string(law));
+  state.SetLabel(ms::to_string(law) + (options.relative_noise ? " relative noise" : ""));
 }
 BENCHMARK(BM_EmgFitNewton)
-    ->Arg(int(ms::DampingKind::rayleigh))
-    ->Arg(int(ms::DampingKind::powerlaw))
-    ->Arg(int(ms::DampingKind::hybrid))
+    ->Args({int(ms::DampingKind::rayleigh), 0})
+    ->Args({int(ms::DampingKind::powerlaw), 0})
+    ->Args({int(ms::DampingKind::hybrid), 0})
+    ->Args({int(ms::DampingKind::rayleigh), 1})
+    ->Args({int(ms::DampingKind::hybrid), 1})
     ->Unit(benchmark::kMillisecond);
 
 // Naive reference: plain gradient ascent (as in the paper) on the same scaled parameters and analytic

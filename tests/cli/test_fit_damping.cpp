@@ -153,6 +153,21 @@ TEST_F(FitDampingCli, FewerPointsThanParameters) {
   EXPECT_EQ(run_cli("'" + f + "' --law rayleigh --estimator lsq --json").exit_code, 0);
 }
 
+TEST_F(FitDampingCli, RelativeNoiseMatchesLibraryFit) {
+  const auto points = ms::damping_points(ms::read_damping_features_csv(kFeatures));
+  const CliRun r = run_cli("'" + kFeatures + "' --law rayleigh --estimator emg --noise relative --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ms::DampingFitOptions relative;
+  relative.relative_noise = true;
+  const ms::DampingFit fit = ms::fit_damping(points, ms::DampingKind::rayleigh, ms::DampingEstimator::emg, relative);
+  EXPECT_EQ(j.at("noise"), "relative");
+  EXPECT_DOUBLE_EQ(j.at("params").at("alpha").get<double>(), fit.law.alpha1);
+  EXPECT_DOUBLE_EQ(j.at("loglik").get<double>(), *fit.loglik);
+  const ms::DampingFit constant = ms::fit_damping(points, ms::DampingKind::rayleigh, ms::DampingEstimator::emg);
+  EXPECT_NE(fit.law.alpha1, constant.law.alpha1);  // a different model, not the default under another name
+}
+
 TEST_F(FitDampingCli, MissingFile) {
   const std::string f = (dir_ / "nope.csv").string();
   expect_rejected("'" + f + "' --law rayleigh --estimator emg", f, "no such file");
@@ -162,6 +177,9 @@ TEST_F(FitDampingCli, UnknownLawAndEstimator) {
   expect_rejected("'" + kFeatures + "' --law quadratic --estimator emg", "--law", "unknown law 'quadratic'");
   expect_rejected("'" + kFeatures + "' --law constant_q --estimator emg", "--law", "unknown law 'constant_q'");
   expect_rejected("'" + kFeatures + "' --law rayleigh --estimator mle", "--estimator", "unknown estimator 'mle'");
+  expect_rejected("'" + kFeatures + "' --law rayleigh --estimator emg --noise loud", "--noise", "unknown noise model 'loud'");
+  expect_rejected("'" + kFeatures + "' --law rayleigh --estimator lb --noise relative", "--noise",
+                  "applies to --estimator emg only");
 }
 
 }  // namespace
