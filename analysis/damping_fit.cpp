@@ -369,9 +369,11 @@ DampingFit fit_damping(const std::vector<DampingPoint>& points, DampingKind law,
     for (const DampingPoint& p : points)
       weighted.noise_scale.push_back(std::max(damping_c_per_s(from_law, p.lambda_rad2_s2) / pr.c_scale, 0.01));
   };
-  if (options.relative_noise) scales_from(law_from_scaled(pr, fit_law_scaled(pr, DampingEstimator::lb, &evaluations)));
+  const EmgVector lb_start = fit_law_scaled(pr, DampingEstimator::lb, &evaluations);
+  if (options.relative_noise) scales_from(law_from_scaled(pr, lb_start));
   for (DampingEstimator start : {DampingEstimator::lb, DampingEstimator::lsq}) {
-    const NewtonResult r = maximise_emg(weighted, emg_start(pr, fit_law_scaled(pr, start, &evaluations)), options);
+    const EmgVector law_start = start == DampingEstimator::lb ? lb_start : fit_law_scaled(pr, start, &evaluations);
+    const NewtonResult r = maximise_emg(weighted, emg_start(pr, law_start), options);
     iterations += r.iterations;
     if (r.loglik > best.loglik) best = r;
   }

@@ -78,14 +78,13 @@ TEST_P(DampingFromSounds, SyntheticValidationOnExtractedFeatures) {
     std::vector<DampingPoint> pts;
     const std::size_t n = how_many(rng);
     for (std::size_t i = 0; i < n; ++i) pts.insert(pts.end(), pool[ids[i]].begin(), pool[ids[i]].end());
-    auto err = [&](DampingEstimator e) {
-      return std::abs(fit_damping(pts, DampingKind::rayleigh, e).law.alpha1 - law.alpha1) / law.alpha1;
+    auto err = [&](DampingEstimator e, const DampingFitOptions& options = {}) {
+      return std::abs(fit_damping(pts, DampingKind::rayleigh, e, options).law.alpha1 - law.alpha1) / law.alpha1;
     };
     emg.push_back(err(DampingEstimator::emg));
     DampingFitOptions relative;
     relative.relative_noise = true;
-    emg_rel.push_back(std::abs(fit_damping(pts, DampingKind::rayleigh, DampingEstimator::emg, relative).law.alpha1 -
-                               law.alpha1) / law.alpha1);
+    emg_rel.push_back(err(DampingEstimator::emg, relative));
     lb.push_back(err(DampingEstimator::lb));
     lsq.push_back(err(DampingEstimator::lsq));
   }
