@@ -131,6 +131,13 @@ void merge_duplicates(std::vector<DampedComponent>& c, double fs) {
   c = std::move(kept);
 }
 
+// A component starting far above the recording's own peak is not a mode: it is one of a group of
+// crowded fast components that cancel each other (an ill-conditioned joint fit; drop_cancelling only
+// sees pairs). A real impact's modes start roughly in phase, so none exceeds the peak by this much.
+constexpr double kMaxAmpOverPeak = 3.0;
+
+bool overshoots(const DampedComponent& c, double peak) { return std::abs(c.b) > kMaxAmpOverPeak * peak; }
+
 }  // namespace
 
 std::optional<std::string> recording_problem(const std::vector<float>& samples, double sample_rate_hz) {
@@ -231,6 +238,7 @@ ExtractedFeatures extract_features(const std::vector<float>& samples, double fs,
   refine_poles(s, comps, ro);
   merge_duplicates(comps, fs);
   drop_cancelling(comps, frames, options.fast_decay_per_s / fs);
+  std::erase_if(comps, [&](const DampedComponent& c) { return overshoots(c, peak); });
   // Greedy pursuit on the residual of the joint fit (replaces a second sub-band scan: it finds the
   // crowded, heavily damped modes the bands miss, at a fraction of the cost).
   PursuitOptions po;
@@ -246,11 +254,14 @@ ExtractedFeatures extract_features(const std::vector<float>& samples, double fs,
       if (d < options.hum_decay_per_s || d > options.max_decay_per_s || f < options.min_freq_hz ||
           f >= 0.5 * fs)
         return true;
-      return !audible(c);
+      return overshoots(c, peak) || !audible(c);
     });
     if (pass == 0) refine_poles(s, comps, ro);
     else fit_amplitudes(s, comps);
   }
+  // Amplitudes re-solved on fewer poles can still blow up where a cancelling group remains.
+  if (std::erase_if(comps, [&](const DampedComponent& c) { return overshoots(c, peak); }) > 0)
+    fit_amplitudes(s, comps);
   for (auto& c : comps) {
     c.b *= std::exp(-c.s * double(skip));  // amplitude at the onset, not at the end of the contact
     Mode m;
