@@ -15,7 +15,8 @@
 //  5. greedy damped-sinusoid pursuit on the residual (damped_pursuit.hpp): the best-matching atom is
 //     added and refit with its spectral neighbours, until nothing stands out of the noise;
 //  6. Sterling et al.'s clean-up: drop stationary hum (decay below hum_decay_per_s) and modes whose
-//     energy does not stand min_snr_db above the noise; refit the survivors.
+//     energy does not stand min_snr_db above the noise; refit the survivors;
+//  7. optionally (low_band_restart, CLI --thorough) a second start for the crowded low band.
 #pragma once
 #include <cstddef>
 #include <optional>
@@ -48,6 +49,9 @@ struct ExtractOptions {
   // weaker fast poles as candidates; the audibility check and the joint fit sort them out.
   double fast_threshold_factor = 2.0;
   int pursuit_atoms = 16;          // at most this many modes added by the residual pursuit
+  // A second start for the heavily damped modes below 700 Hz (rebuilt by pursuit, refit, kept if the
+  // penalised fit improves): finds ~1.6 % more modes on crowded impacts for ~70 % more time.
+  bool low_band_restart = false;
   int refine_iterations = 6;
 };
 

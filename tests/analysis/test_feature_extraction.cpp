@@ -46,15 +46,21 @@ double residual_in_noise_variances(const std::vector<float>& x, const std::vecto
   return e / (sigma * sigma);
 }
 
-TEST(FeatureExtraction, RandomImpactsAt40dBSnr) {
+struct RecallRun {
   std::size_t eligible = 0, found = 0, extracted = 0;
   std::size_t explained_seeds = 0, misses_where_explained = 0;
   std::vector<double> freq_err, decay_err, amp_err;
+  double recall() const { return double(found) / double(eligible); }
+};
+
+RecallRun run_random_impacts(const ExtractOptions& options) {
+  RecallRun run;
+  auto& [eligible, found, extracted, explained_seeds, misses_where_explained, freq_err, decay_err, amp_err] = run;
   for (std::uint64_t seed = 1; seed <= 12; ++seed) {
     const ModalModel truth = testing::random_impact(seed);
     double sigma = 0.0;
     const auto x = testing::render_noisy(truth, kFs, 2.0, 40.0, seed, 0, &sigma);
-    const ExtractedFeatures got = extract_features(x, kFs);
+    const ExtractedFeatures got = extract_features(x, kFs, options);
     extracted += got.modes.size();
     double strongest = 0.0;
     for (const auto& m : truth.modes) strongest = std::max(strongest, m.amp);
@@ -88,20 +94,26 @@ TEST(FeatureExtraction, RandomImpactsAt40dBSnr) {
     eligible += case_eligible;
     found += case_found;
   }
-  const double recall = double(found) / double(eligible);
   std::printf("recall %.4f (%zu/%zu), extracted %zu, median rel err: freq %.3g decay %.3g amp %.3g\n",
-              recall, found, eligible, extracted, median(freq_err), median(decay_err), median(amp_err));
+              run.recall(), found, eligible, extracted, median(freq_err), median(decay_err), median(amp_err));
   std::printf("%zu of %zu misses are in the %zu recordings the extracted modes explain as well as the truth\n",
               misses_where_explained, eligible - found, explained_seeds);
-  // Goal (issue 3): >= 0.95. Not reached yet: 0.898 measured on these 12 seeds (0.917 on seeds
+  return run;
+}
+
+TEST(FeatureExtraction, RandomImpactsAt40dBSnr) {
+  const RecallRun run = run_random_impacts({});
+  const auto& [eligible, found, extracted, explained_seeds, misses_where_explained, freq_err, decay_err, amp_err] = run;
+  const double recall = run.recall();
+  // Goal (issue 3): >= 0.95. Not reached yet: 0.900 measured on these 12 seeds (0.917 on seeds
   // 13-30). Almost every miss is a heavily damped mode (d > 100 1/s, mostly below ~450 Hz) with a
   // comparable neighbour closer than ~0.35 (d1 + d2) / 2 pi in frequency: overlapping Lorentzians
   // that merge into one fitted mode, or pairs (|df| < 0.1 (d1 + d2) / 2 pi) that no estimator
   // separates at this SNR. This bound guards the level reached.
   EXPECT_GE(recall, 0.89);
-  // 31 of the 51 misses lie in 8 recordings that the extracted modes already explain as well as the
+  // 31 of the 50 misses lie in 8 recordings that the extracted modes already explain as well as the
   // true modes do (residual within one mode's BIC price): there the data do not ask for the missed
-  // modes. The other 20 (seeds 1, 2, 4, 5) are fit failures (local minima of the joint fit); with all
+  // modes. The other 19 (seeds 1, 2, 4, 5) are fit failures (local minima of the joint fit); with all
   // of them found the recall would be 470/501 = 93.8 %, still under 95 %.
   EXPECT_GE(explained_seeds, 8u);
   EXPECT_LE(median(freq_err), 0.0005);
@@ -109,6 +121,21 @@ TEST(FeatureExtraction, RandomImpactsAt40dBSnr) {
   EXPECT_LE(median(amp_err), 0.05);
   // Few spurious features: the extracted count stays close to the true count.
   EXPECT_LE(double(extracted), 1.15 * double(eligible));
+}
+
+// The second start for the crowded low band (--thorough) turns fit failures into finds: measured
+// 459/501 = 91.6 % against 451/501 by default on these seeds, with the same accuracy and no more
+// spurious modes; it is kept only where the penalised fit improves, so it never does worse.
+TEST(FeatureExtraction, ThoroughLowBandRestartFindsMore) {
+  ExtractOptions thorough;
+  thorough.low_band_restart = true;
+  const RecallRun run = run_random_impacts(thorough);
+  EXPECT_GE(run.recall(), 0.91);
+  EXPECT_GE(run.explained_seeds, 9u);  // one fewer local minimum than the default
+  EXPECT_LE(median(run.freq_err), 0.0005);
+  EXPECT_LE(median(run.decay_err), 0.03);
+  EXPECT_LE(median(run.amp_err), 0.05);
+  EXPECT_LE(double(run.extracted), 1.15 * double(run.eligible));
 }
 
 // Coloured noise: the noise floor and the order selection assume white noise. With pink-ish noise

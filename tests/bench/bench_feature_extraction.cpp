@@ -23,17 +23,20 @@ const std::vector<float>& impact() {
   return x;
 }
 
+// Arg 0: the default pipeline; arg 1: with the low-band second start (extract --thorough).
 void BM_ExtractFeatures(benchmark::State& state) {
   const auto& x = impact();
+  ms::ExtractOptions options;
+  options.low_band_restart = state.range(0) != 0;
   std::size_t modes = 0;
   for (auto _ : state) {
-    const auto f = ms::extract_features(x, kFs);
+    const auto f = ms::extract_features(x, kFs, options);
     modes = f.modes.size();
     benchmark::DoNotOptimize(modes);
   }
   state.counters["modes"] = double(modes);
 }
-BENCHMARK(BM_ExtractFeatures)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ExtractFeatures)->ArgName("thorough")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 // Naive reference: one full-length FFT, local maxima above the median level (no decay estimate).
 void BM_NaiveFftPeakPicker(benchmark::State& state) {

@@ -111,6 +111,17 @@ TEST_F(ExtractCli, CsvAndJsonCarryTheModes) {
   EXPECT_NE(text.find("\nbowl,523"), std::string::npos) << text;
 }
 
+// --thorough adds a second start for the low band; on a clean two-mode sound it changes nothing.
+TEST_F(ExtractCli, ThoroughKeepsASimpleSoundsModes) {
+  const fs::path wav = write("bowl.wav", two_mode_impact(1.0));
+  const CliRun r = run("extract " + wav.string() + " --json --thorough");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto modes = nlohmann::json::parse(r.out)["sounds"][0]["modes"];
+  ASSERT_EQ(modes.size(), 2u) << r.out;
+  EXPECT_NEAR(modes[0]["freq_hz"].get<double>(), 523.0, 0.01);
+  EXPECT_NEAR(modes[1]["decay_per_s"].get<double>(), 25.0, 0.25);
+}
+
 TEST_F(ExtractCli, StereoMixAndChannelChoice) {
   const auto mono = two_mode_impact(0.5);
   std::vector<float> stereo;
