@@ -50,20 +50,33 @@ struct RecallRun {
   std::size_t eligible = 0, found = 0, extracted = 0;
   std::size_t explained_seeds = 0, misses_where_explained = 0;
   std::vector<double> freq_err, decay_err, amp_err;
+  // The same count with "within 40 dB" read on the issue's own mode level (section 2: power
+  // P = amp^2 / decay, level 10 log10 P) instead of on the initial amplitude.
+  std::size_t level_eligible = 0, level_found = 0;
   double recall() const { return double(found) / double(eligible); }
+  double level_recall() const { return double(level_found) / double(level_eligible); }
 };
 
-RecallRun run_random_impacts(const ExtractOptions& options) {
+RecallRun run_random_impacts(const ExtractOptions& options, std::uint64_t first_seed = 1, std::uint64_t last_seed = 12) {
   RecallRun run;
-  auto& [eligible, found, extracted, explained_seeds, misses_where_explained, freq_err, decay_err, amp_err] = run;
-  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+  auto& [eligible, found, extracted, explained_seeds, misses_where_explained, freq_err, decay_err, amp_err,
+         level_eligible, level_found] = run;
+  for (std::uint64_t seed = first_seed; seed <= last_seed; ++seed) {
     const ModalModel truth = testing::random_impact(seed);
     double sigma = 0.0;
     const auto x = testing::render_noisy(truth, kFs, 2.0, 40.0, seed, 0, &sigma);
     const ExtractedFeatures got = extract_features(x, kFs, options);
     extracted += got.modes.size();
-    double strongest = 0.0;
-    for (const auto& m : truth.modes) strongest = std::max(strongest, m.amp);
+    double strongest = 0.0, strongest_power = 0.0;
+    for (const auto& m : truth.modes) {
+      strongest = std::max(strongest, m.amp);
+      strongest_power = std::max(strongest_power, m.amp * m.amp / m.decay_per_s);
+    }
+    for (const auto& m : truth.modes) {
+      if (m.amp * m.amp / m.decay_per_s < 1e-4 * strongest_power) continue;  // 40 dB in power
+      ++level_eligible;
+      level_found += matches(nearest(got.modes, m.freq_hz), m.freq_hz);
+    }
     std::size_t case_found = 0, case_eligible = 0;
     for (const auto& m : truth.modes) {
       if (m.amp < strongest * 0.01) continue;  // within 40 dB of the strongest
@@ -96,6 +109,7 @@ RecallRun run_random_impacts(const ExtractOptions& options) {
   }
   std::printf("recall %.4f (%zu/%zu), extracted %zu, median rel err: freq %.3g decay %.3g amp %.3g\n",
               run.recall(), found, eligible, extracted, median(freq_err), median(decay_err), median(amp_err));
+  std::printf("recall by mode level (power) %.4f (%zu/%zu)\n", run.level_recall(), level_found, level_eligible);
   std::printf("%zu of %zu misses are in the %zu recordings the extracted modes explain as well as the truth\n",
               misses_where_explained, eligible - found, explained_seeds);
   return run;
@@ -103,7 +117,8 @@ RecallRun run_random_impacts(const ExtractOptions& options) {
 
 TEST(FeatureExtraction, RandomImpactsAt40dBSnr) {
   const RecallRun run = run_random_impacts({});
-  const auto& [eligible, found, extracted, explained_seeds, misses_where_explained, freq_err, decay_err, amp_err] = run;
+  const auto& [eligible, found, extracted, explained_seeds, misses_where_explained, freq_err, decay_err, amp_err,
+               level_eligible, level_found] = run;
   const double recall = run.recall();
   // Goal (issue 3): >= 0.95. Not reached yet: 0.900 measured on these 12 seeds (0.917 on seeds
   // 13-30). Almost every miss is a heavily damped mode (d > 100 1/s, mostly below ~450 Hz) with a
@@ -136,6 +151,18 @@ TEST(FeatureExtraction, ThoroughLowBandRestartFindsMore) {
   EXPECT_LE(median(run.decay_err), 0.03);
   EXPECT_LE(median(run.amp_err), 0.05);
   EXPECT_LE(double(run.extracted), 1.15 * double(run.eligible));
+}
+
+// "Within 40 dB of the strongest" read on the issue's own definition of a mode's level (section 2:
+// 10 log10 of the power amp^2 / decay) rather than on the initial amplitude: a mode at d = 500 1/s
+// carries 30 dB less energy than one of the same amplitude at d = 0.5 1/s. Over seeds 1-30 (1031
+// such modes) the default finds 95.0 % and --thorough 95.5 %; read on amplitude, 91-92 %.
+TEST(FeatureExtraction, RecallByModeLevelOverThirtySeeds) {
+  ExtractOptions thorough;
+  thorough.low_band_restart = true;
+  const RecallRun run = run_random_impacts(thorough, 1, 30);
+  EXPECT_GE(run.level_recall(), 0.95);
+  EXPECT_GE(run.recall(), 0.91);
 }
 
 // Coloured noise: the noise floor and the order selection assume white noise. With pink-ish noise
