@@ -67,9 +67,10 @@ TEST(AuditReal, BellFreeVersusMutedIsSupportDamping) {
 }
 
 // The only genuine soft-to-hard series of struck metal in the kits (four different recordings of a
-// ride-cymbal bell). NOT MET: the audit names noise_floor and mode_doublet but not contact_duration
-// (its statistic is 0.13 dB against a 0.25 dB threshold; the plain model misses this bell by 18 dB,
-// far more than any strike-to-strike difference). Kept, disabled, as the open target.
+// ride-cymbal bell). NOT MET: the audit names support_damping and noise_floor but not
+// contact_duration (its statistic is 0.19 dB against a 0.25 dB threshold, fitted contacts 0.06-0.09 ms;
+// the plain model misses this bell by 18 dB, far more than any strike-to-strike difference). Kept,
+// disabled, as the open target.
 TEST(AuditReal, DISABLED_RideBellSoftToHardIsContactDuration) {
   REQUIRE_KITS();
   const auto rec = load("The Black Pearl 1.0", {"PaisteBell-Softest.wav", "PaisteBell-Soft.wav", "PaisteBell-Med.wav",
