@@ -40,6 +40,7 @@ struct AuditModel {
   double reverb_level_db = 0.0;          // ... its energy relative to the strike's direct sound
   double transient_ms = 0.0;             // residual_transient: white burst decaying 60 dB in this (0: none)
   double transient_level_db = 0.0;       // ... its energy relative to the strike's direct sound
+  std::size_t transient_pseudo_modes = 0; // ... burst tracks the plain model had taken for modes (dropped)
   std::vector<std::string> effects;      // named, in order
 };
 

@@ -4,7 +4,9 @@
 // tail follow that trend); median over strikes. It looks at the recording alone: a burst also biases
 // the fitted modes, so a model-relative statistic hides it, and the gap's 23 ms frames barely see a
 // few ms. Extension: a white burst (60 dB decay time and energy relative to the direct sound) fitted
-// on the training strikes; it follows each strike's gain.
+// on the training strikes; it follows each strike's gain. It replaces the burst's pseudo-modes: tracks
+// the mode fit made of the burst's noise, which decay many times faster than the model's law and
+// which the plain model, putting every mode on the law, lets ring for the whole strike.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -20,8 +22,39 @@ constexpr double kMinAttackExcessDb = 6.0;  // tuning seeds
 constexpr double kAttackS = 3e-3, kLateS = 10e-3, kLateSpanS = 10e-3;
 constexpr double kMinMs = 0.5, kMaxMs = 40.0;
 constexpr double kMinLevelDb = -60.0, kMaxLevelDb = 10.0;
+constexpr double kPseudoModeDecayRatio = 4.0;  // tuning seeds: burst tracks 5-500x, modes ~1x (support damping < 3x)
+
+// A track that decays many times faster than the model's law lets it (median over the training
+// strikes where it was measured) is the burst's noise caught by the mode fit, not a mode: the plain
+// model, which puts every mode on the law, makes it ring for the whole strike.
+bool burst_pseudo_mode(const AuditData& data, const AuditModel& model, std::size_t n,
+                       const std::vector<std::size_t>& train) {
+  const AuditMode& m = model.modes[n];
+  if (m.track < 0) return false;
+  std::vector<double> ratio;
+  for (std::size_t s : train) {
+    const TrackObservation& o = data.tracks[std::size_t(m.track)].strikes[s];
+    const double d = strike_decay(model, s, n);
+    if (o.present && d > 0.0) ratio.push_back(o.decay_per_s / d);
+  }
+  return !ratio.empty() && median(ratio) >= kPseudoModeDecayRatio;
+}
 
 void extend(const AuditData& data, AuditModel& model, const std::vector<std::size_t>& train) {
+  // The burst replaces them (per-mode support excesses are dropped with their modes).
+  std::vector<bool> keep(model.modes.size());
+  for (std::size_t n = 0; n < keep.size(); ++n) keep[n] = !burst_pseudo_mode(data, model, n, train);
+  std::vector<AuditMode> modes;
+  for (std::size_t n = 0; n < keep.size(); ++n)
+    if (keep[n]) modes.push_back(model.modes[n]);
+  for (auto& per_mode : model.extra_decay_per_s) {
+    std::vector<double> kept;
+    for (std::size_t n = 0; n < keep.size(); ++n)
+      if (keep[n]) kept.push_back(per_mode[n]);
+    per_mode = std::move(kept);
+  }
+  model.transient_pseudo_modes += model.modes.size() - modes.size();
+  model.modes = std::move(modes);
   AuditModel without = model;
   without.transient_ms = 0.0;
   const DecayingNoiseFit f = fit_decaying_noise(data, without, train, 1e-3 * kMinMs, 1e-3 * kMaxMs, kMinLevelDb, kMaxLevelDb);
@@ -68,7 +101,8 @@ Detection detect(const AuditData& data, const AuditModel&) {
 }
 
 Parameters parameters(const AuditData&, const AuditModel& model) {
-  return {{"duration_ms", model.transient_ms}, {"level_db", model.transient_level_db}};
+  return {{"duration_ms", model.transient_ms}, {"level_db", model.transient_level_db},
+          {"pseudo_modes_dropped", double(model.transient_pseudo_modes)}};
 }
 
 }  // namespace

@@ -17,11 +17,11 @@
 namespace ms::test {
 namespace {
 
-// Effects below the 90 % bar on seeds 8000-8159, with the share they reach (README says so):
-// residual_transient 20 of 23 (87 %): weak bursts beside a louder effect, or named as damping_law
-// (a burst at the attack biases the early decays). damping_law, below the bar on 7000-7159 (75 %),
-// reaches 22 of 22 with the scatter-weighted detector.
-const std::vector<std::pair<std::string, double>> kMissedBars = {{"residual_transient", 0.86}};
+// Effects below the 90 % bar on seeds 8000-8159, with the share they reach (README says so): none
+// now. residual_transient reached 20 of 23 (87 %) until its extension replaced the burst's pseudo-modes
+// (tuning seeds), then 21 of 23 (91 %); damping_law, below the bar on 7000-7159 (75 %), reaches 22 of
+// 22 with the scatter-weighted detector.
+const std::vector<std::pair<std::string, double>> kMissedBars = {};
 // Over the cases hiding no residual_transient the gap shrinks by half in 98 of 101 (97 %): the bar.
 constexpr double kGapShrinkBar = 0.9;
 
@@ -83,10 +83,10 @@ TEST(AuditHidden, HeldOutSeedsMeetTheBars) {
   }
   EXPECT_GE(double(tally.clean_quiet), 0.9 * tally.clean);
   // With an effect present the gap shrinks by at least half in at least 90 % of the cases: missed
-  // overall (105 of 124, 85 %) because a burst of a few ms barely moves a gap of 23 ms frames (the
+  // overall (107 of 124, 86 %) because a burst of a few ms barely moves a gap of 23 ms frames (weak
   // residual_transient cases start near 0.1 dB and stay there); asserted at the level reached, and
   // at the bar over the cases hiding no residual_transient.
-  EXPECT_GE(double(tally.shrunk), 0.84 * tally.with_effect);
+  EXPECT_GE(double(tally.shrunk), 0.85 * tally.with_effect);
   EXPECT_GE(double(tally.gap_shrunk), kGapShrinkBar * tally.with_gap_effect);
 }
 
