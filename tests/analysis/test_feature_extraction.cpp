@@ -141,6 +141,10 @@ TEST(FeatureExtraction, RandomImpactsAt40dBSnr) {
 // The second start for the crowded low band (--thorough) turns fit failures into finds: measured
 // 459/501 = 91.6 % against 451/501 by default on these seeds, with the same accuracy and no more
 // spurious modes; it is kept only where the penalised fit improves, so it never does worse.
+// "Within 40 dB of the strongest" read on the issue's own definition of a mode's level (section 2:
+// 10 log10 of the power amp^2 / decay) rather than on the initial amplitude: a mode at d = 500 1/s
+// carries 30 dB less energy than one of the same amplitude at d = 0.5 1/s. Over seeds 1-30 (1031
+// such modes) the default finds 95.0 % and --thorough 95.5 %; read on amplitude, 91-92 %.
 TEST(FeatureExtraction, ThoroughLowBandRestartFindsMore) {
   ExtractOptions thorough;
   thorough.low_band_restart = true;
@@ -151,18 +155,14 @@ TEST(FeatureExtraction, ThoroughLowBandRestartFindsMore) {
   EXPECT_LE(median(run.decay_err), 0.03);
   EXPECT_LE(median(run.amp_err), 0.05);
   EXPECT_LE(double(run.extracted), 1.15 * double(run.eligible));
-}
-
-// "Within 40 dB of the strongest" read on the issue's own definition of a mode's level (section 2:
-// 10 log10 of the power amp^2 / decay) rather than on the initial amplitude: a mode at d = 500 1/s
-// carries 30 dB less energy than one of the same amplitude at d = 0.5 1/s. Over seeds 1-30 (1031
-// such modes) the default finds 95.0 % and --thorough 95.5 %; read on amplitude, 91-92 %.
-TEST(FeatureExtraction, RecallByModeLevelOverThirtySeeds) {
-  ExtractOptions thorough;
-  thorough.low_band_restart = true;
-  const RecallRun run = run_random_impacts(thorough, 1, 30);
-  EXPECT_GE(run.level_recall(), 0.95);
-  EXPECT_GE(run.recall(), 0.91);
+  // Seeds 13-30 with 1-12 above: the two readings of the 40 dB bar over 30 seeds.
+  const RecallRun more = run_random_impacts(thorough, 13, 30);
+  const double level_recall =
+      double(run.level_found + more.level_found) / double(run.level_eligible + more.level_eligible);
+  std::printf("seeds 1-30: recall by mode level (power) %.4f, by amplitude %.4f\n", level_recall,
+              double(run.found + more.found) / double(run.eligible + more.eligible));
+  EXPECT_GE(level_recall, 0.95);
+  EXPECT_GE(double(run.found + more.found), 0.91 * double(run.eligible + more.eligible));
 }
 
 // Coloured noise: the noise floor and the order selection assume white noise. With pink-ish noise
