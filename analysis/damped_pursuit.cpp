@@ -37,11 +37,18 @@ std::size_t damped_pursuit(const std::vector<double>& x, double fs, std::vector<
   // Decay envelopes and their energies, computed once.
   std::vector<std::vector<double>> env(o.decays_per_s.size(), std::vector<double>(window));
   std::vector<double> env_energy(o.decays_per_s.size(), 0.0);
-  for (std::size_t j = 0; j < env.size(); ++j)
+  // Noise variance an atom of each decay sees through a room tail (the floor when there is none).
+  std::vector<double> env_noise(o.decays_per_s.size(), o.noise_variance);
+  const bool tail = o.tail && !o.tail->flat();
+  for (std::size_t j = 0; j < env.size(); ++j) {
+    double seen = 0.0;
     for (std::size_t n = 0; n < window; ++n) {
       env[j][n] = std::exp(-o.decays_per_s[j] * double(n) / fs);
       env_energy[j] += env[j][n] * env[j][n];
+      if (tail) seen += env[j][n] * env[j][n] * std::max(o.noise_variance, o.tail->at(n));
     }
+    if (tail) env_noise[j] = seen / env_energy[j];
+  }
   const auto k_lo = std::size_t(std::ceil(o.min_freq_hz / bin_hz));
   const auto k_hi = std::min(size / 2, std::size_t(o.max_freq_hz / bin_hz));
   std::vector<double> inv_noise(size / 2 + 1, 1.0 / o.noise_variance);
@@ -55,7 +62,7 @@ std::size_t damped_pursuit(const std::vector<double>& x, double fs, std::vector<
   zeros.reserve(x.size());
   std::size_t added = 0;
   for (int atom = 0; atom < o.max_atoms; ++atom) {
-    double best_gain = 0.0;
+    double best_gain = 0.0, best_inv_noise = 0.0;
     cd best_s, best_b;
     for (std::size_t j = 0; j < env.size(); ++j) {
       for (std::size_t n = 0; n < window; ++n) in[n] = r[n] * env[j][n];
@@ -63,11 +70,12 @@ std::size_t damped_pursuit(const std::vector<double>& x, double fs, std::vector<
       for (std::size_t k = k_lo; k <= k_hi; ++k) {
         const cd y(out[k][0], -out[k][1]);  // sum r[n] conj(e^{s n})
         // Least-squares energy of Re(b e^{s n}) with b = 2 conj-projection / envelope energy.
-        const double gain = 2.0 * std::norm(y) / env_energy[j] * inv_noise[k];
+        const double gain = 2.0 * std::norm(y) / env_energy[j] * std::min(inv_noise[k], 1.0 / env_noise[j]);
         if (gain > best_gain) {
           best_gain = gain;
           best_s = cd(-o.decays_per_s[j], kTwoPi * double(k) * bin_hz) / fs;
           best_b = 2.0 * std::conj(y) / env_energy[j];
+          best_inv_noise = std::min(inv_noise[k], 1.0 / env_noise[j]);
         }
       }
     }
@@ -95,7 +103,7 @@ std::size_t damped_pursuit(const std::vector<double>& x, double fs, std::vector<
     double after = 0.0;
     for (std::size_t n = 0; n < window; ++n) after += next[n] * next[n];
     // No real gain means the atom explains noise or a fit error the refit cannot absorb.
-    if (before - after < 0.25 * o.min_gain / inv_noise[std::size_t(best_s.imag() * fs / kTwoPi / bin_hz)]) break;
+    if (before - after < 0.25 * o.min_gain / best_inv_noise) break;
     // Beyond the span the old and new neighbours differ by less than e^-12 of their level.
     std::copy(next.begin(), next.end(), r.begin());
     comps = std::move(others);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "analysis/damped_fit.hpp"
+#include "analysis/noise_envelope.hpp"
 #include "analysis/noise_floor.hpp"
 
 namespace ms {
@@ -20,6 +21,7 @@ struct PursuitOptions {
   double max_freq_hz = 20000.0;
   double noise_variance = 0.0;              // white-noise variance per sample
   const NoiseProfile* noise = nullptr;      // coloured noise (optional): per-frequency variance
+  const NoiseEnvelope* tail = nullptr;      // decaying noise (optional): per-time variance
   double min_gain = 40.0;                   // atom energy over noise variance to be added
   int max_atoms = 16;
   double min_local_decay_per_s = 20.0;      // slower neighbours are held fixed in the local refit

@@ -9,6 +9,7 @@
 #include "analysis/damped_fit.hpp"
 #include "analysis/damped_pursuit.hpp"
 #include "analysis/esprit.hpp"
+#include "analysis/noise_envelope.hpp"
 #include "analysis/noise_floor.hpp"
 #include "analysis/onset.hpp"
 #include "analysis/subband.hpp"
@@ -49,7 +50,7 @@ std::vector<Band> wide_layout(double top_hz, double width_hz) {
 
 // ESPRIT on every band with energy above the noise; poles whose frequency lies in the band's core.
 void scan_bands(SubbandSplitter& split, const std::vector<Band>& bands, double fs, double max_s,
-                double min_freq_hz, double hum_decay_per_s, double threshold_factor,
+                double min_freq_hz, double hum_decay_per_s, double threshold_factor, const NoiseEnvelope& tail,
                 std::vector<DampedComponent>& found) {
   for (const Band& b : bands) {
     // A band whose loudest bin is within ~13 dB of the noise has nothing ESPRIT could find there.
@@ -58,13 +59,15 @@ void scan_bands(SubbandSplitter& split, const std::vector<Band>& bands, double f
     BandSignal sig = split.band(0.5 * (b.lo_hz + b.hi_hz), core, core);
     std::size_t end = std::min(sig.samples.size(), std::size_t(max_s * sig.rate_hz));
     if (end > 2 * sig.settle) end -= sig.settle;
-    // Stop where the band has decayed into the noise (blocks of 16 samples, 3x the noise variance).
+    // Stop where the band has decayed into the noise (blocks of 16 samples, 3x the noise variance,
+    // which a room tail raises for a while).
     constexpr std::size_t kBlock = 16;
     std::size_t last = sig.settle;
     for (std::size_t j = sig.settle; j + kBlock <= end; j += kBlock) {
       double p = 0.0;
       for (std::size_t i = j; i < j + kBlock; ++i) p += std::norm(sig.samples[i]);
-      if (p > 3.0 * double(kBlock) * sig.noise_variance) last = j + kBlock;
+      const double louder = tail.at(std::size_t(double(j) * fs / sig.rate_hz)) / tail.floor_variance;
+      if (p > 3.0 * double(kBlock) * sig.noise_variance * std::max(1.0, louder)) last = j + kBlock;
     }
     end = std::min(end, last + 4 * kBlock);
     if (end <= sig.settle + 24) continue;
@@ -87,20 +90,13 @@ void scan_bands(SubbandSplitter& split, const std::vector<Band>& bands, double f
   }
 }
 
-// Energy of Re(b e^{s n}) over the frames (closed form).
-double component_energy(const DampedComponent& c, std::size_t frames) {
-  const cd t_abs = weighted_geometric_sum(0, cd(2.0 * c.s.real(), 0.0), frames);
-  const cd t_osc = weighted_geometric_sum(0, 2.0 * c.s, frames);
-  return 0.5 * (std::norm(c.b) * t_abs.real() + (c.b * c.b * t_osc).real());
-}
-
 // Pairs of components, one of them fast, that largely cancel each other (their sum carries under a
 // quarter of their energies) are an ill-posed fit of crowded heavily damped modes, not two modes:
 // both go, and the pursuit rebuilds that region from the residual.
 void drop_cancelling(std::vector<DampedComponent>& c, std::size_t frames, double min_decay) {
   const std::size_t K = c.size();
   std::vector<double> e(K);
-  for (std::size_t k = 0; k < K; ++k) e[k] = component_energy(c[k], frames);
+  for (std::size_t k = 0; k < K; ++k) e[k] = component_energy(c[k], 0, frames);
   std::vector<bool> bad(K, false);
   for (std::size_t j = 0; j < K; ++j)
     for (std::size_t k = j + 1; k < K; ++k) {
@@ -195,18 +191,28 @@ ExtractedFeatures extract_features(const std::vector<float>& samples, double fs,
   const double noise_energy = sigma * sigma;
   // Coloured noise: per-band levels from the recording's tail (noise_floor.hpp).
   const NoiseProfile noise = estimate_noise_profile(x, fs, sigma);
-  auto audible = [&](const DampedComponent& c) {
+  // A room tail: noise that decays after the strike (noise_envelope.hpp).
+  const NoiseEnvelope tail = estimate_noise_envelope(s, fs, noise_energy);
+  // Under a tail a component is judged by what it explains with the tail's weights, which needs the
+  // residual of the fit it belongs to (empty without a tail: then its energy alone decides).
+  auto residual_of = [&](const std::vector<double>& signal, const std::vector<DampedComponent>& c) {
+    return tail.flat() ? std::vector<double>{} : subtract_components(signal, c, signal.size());
+  };
+  auto audible = [&](const DampedComponent& c, const std::vector<double>& residual) {
     const double var = std::max(noise_energy, noise.variance_at(c.s.imag() * fs / kTwoPi));
-    return 10.0 * std::log10(component_energy(c, frames) / var) >= options.min_snr_db;
+    double snr = component_energy(c, 0, frames) / var;
+    if (!residual.empty()) snr = std::min(snr, tail.weighted_fit_gain(residual, c));
+    return 10.0 * std::log10(snr) >= options.min_snr_db;
   };
   // Candidates under the noise go at once; at most kMaxCandidates (strongest) survive a scan, which
   // bounds the joint fit on pathological input (e.g. dense stationary tones).
   constexpr std::size_t kMaxCandidates = 240;
-  auto keep_audible = [&](std::vector<DampedComponent>& c) {
-    std::erase_if(c, [&](const DampedComponent& m) { return !audible(m); });
+  auto keep_audible = [&](const std::vector<double>& signal, std::vector<DampedComponent>& c) {
+    const std::vector<double> residual = residual_of(signal, c);
+    std::erase_if(c, [&](const DampedComponent& m) { return !audible(m, residual); });
     if (c.size() > kMaxCandidates) {
       std::sort(c.begin(), c.end(), [&](const auto& a, const auto& b) {
-        return component_energy(a, frames) > component_energy(b, frames);
+        return component_energy(a, 0, frames) > component_energy(b, 0, frames);
       });
       c.resize(kMaxCandidates);
     }
@@ -216,21 +222,21 @@ ExtractedFeatures extract_features(const std::vector<float>& samples, double fs,
     {
       SubbandSplitter split(signal, fs, sigma, &noise);
       scan_bands(split, narrow_layout(top_hz, options.narrow_band_hz), fs, options.max_duration_s,
-                 options.min_freq_hz, options.hum_decay_per_s, 4.0, found);
+                 options.min_freq_hz, options.hum_decay_per_s, 4.0, tail, found);
     }
     std::vector<DampedComponent> with_slow(found.begin() + std::ptrdiff_t(before), found.end());
     fit_amplitudes(signal, with_slow);
-    keep_audible(with_slow);
+    keep_audible(signal, with_slow);
     found.resize(before);
     found.insert(found.end(), with_slow.begin(), with_slow.end());
     const std::vector<double> rest = subtract_components(signal, with_slow, early);
     std::vector<DampedComponent> fast;
     SubbandSplitter split(rest, fs, sigma, &noise);
     scan_bands(split, wide_layout(top_hz, options.wide_band_hz), fs, options.wide_window_s,
-               options.min_freq_hz, options.hum_decay_per_s, options.fast_threshold_factor, fast);
+               options.min_freq_hz, options.hum_decay_per_s, options.fast_threshold_factor, tail, fast);
     std::erase_if(fast, [&](const DampedComponent& c) { return -c.s.real() * fs < options.fast_decay_per_s; });
     fit_amplitudes(rest, fast);
-    keep_audible(fast);
+    keep_audible(rest, fast);
     found.insert(found.end(), fast.begin(), fast.end());
   };
   std::vector<DampedComponent> comps;
@@ -246,17 +252,21 @@ ExtractedFeatures extract_features(const std::vector<float>& samples, double fs,
   po.max_freq_hz = top_hz;
   po.noise_variance = noise_energy;
   po.noise = &noise;
+  po.tail = &tail;
   po.max_atoms = options.pursuit_atoms;
   damped_pursuit(s, fs, comps, po);
   // Hum, contact transients, out-of-range or overshooting poles, and what the noise hides.
-  auto unfit = [&](const DampedComponent& c) {
-    const double d = -c.s.real() * fs, f = c.s.imag() * fs / kTwoPi;
-    if (d < options.hum_decay_per_s || d > options.max_decay_per_s || f < options.min_freq_hz || f >= 0.5 * fs)
-      return true;
-    return overshoots(c, peak) || !audible(c);
+  auto drop_unfit = [&](std::vector<DampedComponent>& c) {
+    const std::vector<double> residual = residual_of(s, c);
+    std::erase_if(c, [&](const DampedComponent& m) {
+      const double d = -m.s.real() * fs, f = m.s.imag() * fs / kTwoPi;
+      if (d < options.hum_decay_per_s || d > options.max_decay_per_s || f < options.min_freq_hz || f >= 0.5 * fs)
+        return true;
+      return overshoots(m, peak) || !audible(m, residual);
+    });
   };
   for (int pass = 0; pass < 2; ++pass) {
-    std::erase_if(comps, unfit);
+    drop_unfit(comps);
     if (pass == 0) refine_poles(s, comps, ro);
     else fit_amplitudes(s, comps);
   }
@@ -286,7 +296,7 @@ ExtractedFeatures extract_features(const std::vector<float>& samples, double fs,
       band.max_atoms = int(low) + 4;
       damped_pursuit(s, fs, alt, band);
       refine_poles(s, alt, ro);
-      std::erase_if(alt, unfit);
+      drop_unfit(alt);
       fit_amplitudes(s, alt);
       if (cost(alt) < cost(comps)) comps = std::move(alt);
     }

@@ -37,6 +37,16 @@ std::vector<ModeTrack> match_modes(const std::vector<std::vector<Mode>>& per_str
     std::vector<double> freqs;
     for (TrackObservation& o : t.strikes) {
       if (o.members.empty()) continue;
+      // One physical mode: a member decaying many times faster or slower than the strike's most
+      // energetic member (power amp^2 / decay) is something else at that frequency, e.g. a burst
+      // of attack noise the fit took for a fast mode, and would swamp the mode's amplitude.
+      const auto power = [](const Mode& m) { return m.amp * m.amp / std::max(m.decay_per_s, 1e-9); };
+      const Mode main = *std::max_element(o.members.begin(), o.members.end(),
+                                          [&](const Mode& a, const Mode& b) { return power(a) < power(b); });
+      std::erase_if(o.members, [&](const Mode& m) {
+        const double ratio = m.decay_per_s / main.decay_per_s;
+        return ratio > options.max_decay_ratio || ratio < 1.0 / options.max_decay_ratio;
+      });
       double e = 0.0, fe = 0.0, de = 0.0;
       for (const Mode& m : o.members) {
         const double w = m.amp * m.amp;

@@ -27,6 +27,7 @@ struct MatchOptions {
   double merge_rel = 0.004;     // modes within 0.4 % ...
   double merge_hz = 8.0;        // ... or 8 Hz of each other are one track (doublets beat slower than 8 Hz)
   double min_presence = 0.5;    // a track must appear in at least this share of the strikes
+  double max_decay_ratio = 4.0; // members of one strike's track decay within this factor of its main one
 };
 
 // per_strike[s] = extracted modes of strike s. Tracks ascending in frequency.
