@@ -2,6 +2,8 @@
 #include "analysis/feature_extraction.hpp"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <cmath>
 #include <complex>
 #include <numbers>
@@ -300,6 +302,17 @@ ExtractedFeatures extract_features(const std::vector<float>& samples, double fs,
       fit_amplitudes(s, alt);
       if (cost(alt) < cost(comps)) comps = std::move(alt);
     }
+  }
+  if (std::getenv("MS_DEBUG_ATTACK")) {
+    const std::size_t blk = 64, nb = std::min<std::size_t>(frames / blk, 40);
+    const std::vector<double> r = subtract_components(s, comps, nb * blk);
+    std::vector<double> v(nb);
+    for (std::size_t k = 0; k < nb; ++k) { for (std::size_t n = k * blk; n < (k + 1) * blk; ++n) v[k] += r[n] * r[n]; v[k] /= blk; }
+    std::vector<double> late(v.begin() + 14, v.end()); std::sort(late.begin(), late.end());
+    const double ref = late[late.size() / 2];
+    std::fprintf(stderr, "attack residual re late (dB):");
+    for (std::size_t k = 0; k < 16; ++k) std::fprintf(stderr, " %.0f", 10 * std::log10(v[k] / ref));
+    std::fprintf(stderr, " | late %.1f dB re floor, %zu comps\n", 10 * std::log10(ref / noise_energy), comps.size());
   }
   for (auto& c : comps) {
     c.b *= std::exp(-c.s * double(skip));  // amplitude at the onset, not at the end of the contact

@@ -38,7 +38,7 @@ namespace {
 
 GapLocation locate(const AuditData& data, const AuditModel& model, const std::vector<GapMap>& maps) {
   GapLocation loc;
-  const SpectrogramGrid& g = data.measured.grid;
+  const SpectrogramGrid& g = data.measured.grids[kDecay];
   std::vector<double> band_sum(g.bands, 0.0), band_n(g.bands, 0.0), time_sum(g.frames, 0.0), time_n(g.frames, 0.0);
   for (const GapMap& m : maps) {
     loc.strike_gap_db.push_back(m.gap_db);

@@ -67,8 +67,8 @@ ModalModel strike_model(const AuditModel& model, std::size_t s) {
 void add_decaying_noise_power(BarkSpectrogram& spec, const SpectrogramGrid& g, double direct_energy, double t60_s,
                               double energy_db) {
   if (t60_s <= 0.0) return;
-  const std::size_t n = g.frames == 0 ? 0 : (g.frames - 1) * g.hop + g.window;
-  const double var0 = decaying_noise_variance(direct_energy, g.sample_rate_hz, n, t60_s, energy_db);
+  // The noise's energy is relative to the direct sound over the whole strike, as synthesis adds it.
+  const double var0 = decaying_noise_variance(direct_energy, g.sample_rate_hz, g.samples, t60_s, energy_db);
   // Per bin, white noise of variance v_i gives E|X|^2 = sum_i w_i^2 v_i; v_i falls by r per sample.
   const double r = std::exp(-2.0 * std::log(1000.0) / (t60_s * g.sample_rate_hz));
   double frame0 = 0.0, ri = 1.0;
@@ -82,28 +82,34 @@ void add_decaying_noise_power(BarkSpectrogram& spec, const SpectrogramGrid& g, d
     for (std::size_t b = 0; b < spec.bands; ++b) spec.at(f, b) += level * double(g.band_bins[b]);
 }
 
-BarkSpectrogram predict_spectrogram(const AuditModel& model, const AuditData& data, std::size_t s,
-                                    double* direct_energy) {
+void add_band_noise_power(BarkSpectrogram& spec, const SpectrogramGrid& g, const std::vector<double>& variance) {
+  if (variance.empty()) return;
+  for (std::size_t f = 0; f < spec.frames; ++f)
+    for (std::size_t b = 0; b < spec.bands && b < variance.size(); ++b)
+      spec.at(f, b) += variance[b] * g.window_energy * double(g.band_bins[b]);
+}
+
+Spectra predict_spectra(const AuditModel& model, const AuditData& data, std::size_t s, double* direct_energy) {
   const MeasuredStrikes& ms_ = data.measured;
   ModalModel modal = strike_model(model, s);
   drop_modes_at_or_above(modal, 0.5 * ms_.sample_rate_hz);
   Excitation impulse;  // the contact is already folded into amplitudes and phases
   const std::size_t samples = ms_.strikes[s].samples.size();
   const std::vector<float> y = render_bank(modal, impulse, ms_.sample_rate_hz, samples);
-  BarkSpectrogram spec = bark_spectrogram(y, ms_.grid);
+  Spectra spec = bark_spectra(y, ms_.grids);
   double energy = 0.0;
   for (float v : y) energy += double(v) * double(v);
   if (direct_energy) *direct_energy = energy;
-  add_decaying_noise_power(spec, ms_.grid, energy, model.reverb_rt60_s, model.reverb_level_db);
-  add_decaying_noise_power(spec, ms_.grid, energy, 1e-3 * model.transient_ms, model.transient_level_db);
-  if (!model.noise_band_power.empty())
-    for (std::size_t f = 0; f < spec.frames; ++f)
-      for (std::size_t b = 0; b < spec.bands; ++b) spec.at(f, b) += model.noise_band_power[b];
+  for (std::size_t r = 0; r < kResolutions; ++r) {
+    add_decaying_noise_power(spec[r], ms_.grids[r], energy, model.reverb_rt60_s, model.reverb_level_db);
+    add_decaying_noise_power(spec[r], ms_.grids[r], energy, 1e-3 * model.transient_ms, model.transient_level_db);
+    add_band_noise_power(spec[r], ms_.grids[r], model.noise_band_variance);
+  }
   return spec;
 }
 
 GapMap strike_gap(const AuditModel& model, const AuditData& data, std::size_t s) {
-  return gap_map(data.measured.strikes[s].spectrogram, predict_spectrogram(model, data, s));
+  return gap_map(data.measured.strikes[s].spectra, predict_spectra(model, data, s));
 }
 
 double mean_gap(const AuditModel& model, const AuditData& data, const std::vector<std::size_t>& strikes) {
@@ -114,22 +120,23 @@ double mean_gap(const AuditModel& model, const AuditData& data, const std::vecto
 }
 
 double strike_variation(const MeasuredStrikes& measured) {
-  const auto energy = [](const BarkSpectrogram& b) {
+  const auto energy = [](const Spectra& b) {
     double e = 0.0;
-    for (double p : b.power) e += p;
+    for (double p : b[kDecay].power) e += p;
     return e;
   };
   std::size_t ref = 0;
   for (std::size_t s = 0; s < measured.strikes.size(); ++s)
-    if (energy(measured.strikes[s].spectrogram) > energy(measured.strikes[ref].spectrogram)) ref = s;
-  const BarkSpectrogram& r = measured.strikes[ref].spectrogram;
+    if (energy(measured.strikes[s].spectra) > energy(measured.strikes[ref].spectra)) ref = s;
+  const Spectra& r = measured.strikes[ref].spectra;
   double sum = 0.0;
   for (std::size_t s = 0; s < measured.strikes.size(); ++s) {
     if (s == ref) continue;
-    BarkSpectrogram scaled = r;
-    const double k = energy(measured.strikes[s].spectrogram) / std::max(energy(r), 1e-300);
-    for (double& p : scaled.power) p *= k;
-    sum += gap_map(measured.strikes[s].spectrogram, scaled).gap_db;
+    Spectra scaled = r;
+    const double k = energy(measured.strikes[s].spectra) / std::max(energy(r), 1e-300);
+    for (BarkSpectrogram& b : scaled)
+      for (double& p : b.power) p *= k;
+    sum += gap_map(measured.strikes[s].spectra, scaled).gap_db;
   }
   return measured.strikes.size() > 1 ? sum / double(measured.strikes.size() - 1) : 0.0;
 }

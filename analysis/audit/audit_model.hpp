@@ -35,7 +35,7 @@ struct AuditModel {
   double contact_ref_s = 0.0;            // ... tau_s = contact_ref_s (gain_s / contact_gain_ref)^-contact_exponent
   double contact_gain_ref = 1.0;
   double contact_exponent = 0.0;
-  std::vector<double> noise_band_power;  // noise_floor: per Bark band (empty: none)
+  std::vector<double> noise_band_variance;  // noise_floor: white-equivalent variance per Bark band (empty: none)
   double reverb_rt60_s = 0.0;            // reverberation: white tail decaying 60 dB in this (0: none)
   double reverb_level_db = 0.0;          // ... its energy relative to the strike's direct sound
   double transient_ms = 0.0;             // residual_transient: white burst decaying 60 dB in this (0: none)
@@ -64,10 +64,13 @@ ModalModel strike_model(const AuditModel& model, std::size_t strike);
 // Decay of mode n in strike s (law or given decay plus support excess).
 double strike_decay(const AuditModel& model, std::size_t strike, std::size_t mode);
 
-// Bark spectrogram the model predicts for strike s (rendered on the data's grid, plus the expected
+// Bark spectrograms the model predicts for strike s (rendered on the data's grids, plus the expected
 // power of its noises); direct_energy (if given) receives sum(y^2) of the rendered modes.
-BarkSpectrogram predict_spectrogram(const AuditModel& model, const AuditData& data, std::size_t strike,
-                                    double* direct_energy = nullptr);
+Spectra predict_spectra(const AuditModel& model, const AuditData& data, std::size_t strike,
+                        double* direct_energy = nullptr);
+
+// Adds the expected power of white noise of `variance` per Bark band (one value per band) on `grid`.
+void add_band_noise_power(BarkSpectrogram& spec, const SpectrogramGrid& grid, const std::vector<double>& variance);
 
 // Adds the expected band power of synthesis/effects' decaying noise (t60_s, energy_db relative to a
 // direct sound of energy direct_energy) to a spectrogram on `grid` (noise starting at sample 0).

@@ -58,7 +58,7 @@ std::string augmented_paramset_yaml(const AuditData& data, const AuditModel& mod
   } else {
     add("excitation: {type: impulse}\n");
   }
-  const bool support = !model.extra_decay_per_s.empty(), noise = !model.noise_band_power.empty();
+  const bool support = !model.extra_decay_per_s.empty(), noise = !model.noise_band_variance.empty();
   const bool reverb = model.reverb_rt60_s > 0.0, transient = model.transient_ms > 0.0;
   if (support || noise || reverb || transient) add("effects:\n");
   if (support) {
@@ -79,9 +79,10 @@ std::string augmented_paramset_yaml(const AuditData& data, const AuditModel& mod
     const double snr = std::clamp(10.0 * std::log10(power / std::max(sigma * sigma, 1e-30)), -20.0, 200.0);
     add("  noise: {snr_db: %.4g, seed: 1}\n", snr);
   }
-  if (reverb) add("  reverb: {rt60_s: %.6g, level_db: %.6g, seed: 1}\n", model.reverb_rt60_s, model.reverb_level_db);
+  // Three seeds: noises drawn from one seed would be the same sequence, correlated, and add 3 dB too much.
+  if (reverb) add("  reverb: {rt60_s: %.6g, level_db: %.6g, seed: 2}\n", model.reverb_rt60_s, model.reverb_level_db);
   if (transient)
-    add("  transient: {level_db: %.6g, duration_ms: %.6g, seed: 1}\n", model.transient_level_db, model.transient_ms);
+    add("  transient: {level_db: %.6g, duration_ms: %.6g, seed: 3}\n", model.transient_level_db, model.transient_ms);
   y += "level: {normalize: none}\noutput: {format: float32}\n";
   return y;
 }

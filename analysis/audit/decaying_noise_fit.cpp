@@ -1,6 +1,7 @@
 #include "analysis/audit/decaying_noise_fit.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace ms::audit {
@@ -9,37 +10,42 @@ DecayingNoiseFit fit_decaying_noise(const AuditData& data, const AuditModel& wit
                                     const std::vector<std::size_t>& strikes, double t60_min_s, double t60_max_s,
                                     double level_min_db, double level_max_db) {
   // The modal rendering does not depend on the noise: render once per strike, add the noise analytically.
-  std::vector<BarkSpectrogram> base;
+  std::vector<Spectra> base;
   std::vector<double> energy;
   for (std::size_t s : strikes) {
     double e = 0.0;
-    base.push_back(predict_spectrogram(without, data, s, &e));
+    base.push_back(predict_spectra(without, data, s, &e));
     energy.push_back(e);
   }
   // gap_map's arithmetic with the measured levels clamped once (the search evaluates ~100 candidates).
-  const SpectrogramGrid& g = data.measured.grid;
-  std::vector<std::vector<double>> measured_db(strikes.size());
-  std::vector<double> floor_db(strikes.size());
-  for (std::size_t i = 0; i < strikes.size(); ++i) {
-    const BarkSpectrogram& m = data.measured.strikes[strikes[i]].spectrogram;
-    double peak = -400.0;
-    for (double p : m.power) peak = std::max(peak, level_db(p));
-    floor_db[i] = peak - kGapFloorDb;
-    for (double p : m.power) measured_db[i].push_back(std::max(level_db(p), floor_db[i]));
-  }
+  const Grids& grids = data.measured.grids;
+  std::vector<std::array<std::vector<double>, kResolutions>> measured_db(strikes.size());
+  std::vector<std::array<double, kResolutions>> floor_db(strikes.size());
+  for (std::size_t i = 0; i < strikes.size(); ++i)
+    for (std::size_t r = 0; r < kResolutions; ++r) {
+      const BarkSpectrogram& m = data.measured.strikes[strikes[i]].spectra[r];
+      double peak = -400.0;
+      for (double p : m.power) peak = std::max(peak, level_db(p));
+      floor_db[i][r] = peak - kGapFloorDb;
+      for (double p : m.power) measured_db[i][r].push_back(std::max(level_db(p), floor_db[i][r]));
+    }
   BarkSpectrogram spec;
   const auto gap_of = [&](double t60, double level) {
     double sum = 0.0;
     for (std::size_t i = 0; i < strikes.size(); ++i) {
-      spec = base[i];
-      add_decaying_noise_power(spec, g, energy[i], t60, level);
       double total = 0.0;
       std::size_t count = 0;
-      for (std::size_t c = 0; c < measured_db[i].size() && c < spec.power.size(); ++c) {
-        const double a = measured_db[i][c], b = std::max(level_db(spec.power[c]), floor_db[i]);
-        if (a <= floor_db[i] && b <= floor_db[i]) continue;
-        total += std::abs(b - a);
-        ++count;
+      for (std::size_t r = 0; r < kResolutions; ++r) {
+        spec = base[i][r];
+        add_decaying_noise_power(spec, grids[r], energy[i], t60, level);
+        const std::vector<double>& meas = measured_db[i][r];
+        const double floor = floor_db[i][r];
+        for (std::size_t c = 0; c < meas.size() && c < spec.power.size(); ++c) {
+          const double a = meas[c], b = std::max(level_db(spec.power[c]), floor);
+          if (a <= floor && b <= floor) continue;
+          total += std::abs(b - a);
+          ++count;
+        }
       }
       sum += count > 0 ? total / double(count) : 0.0;
     }

@@ -16,22 +16,24 @@ constexpr double kMinGapImprovementDb = 0.3;  // in-sample gap improvement (tuni
 constexpr double kTailShare = 0.4;
 
 void extend(const AuditData& data, AuditModel& model, const std::vector<std::size_t>& train) {
-  const SpectrogramGrid& g = data.measured.grid;
+  const SpectrogramGrid& g = data.measured.grids[kDecay];
   std::vector<std::vector<double>> per_band(g.bands);
   AuditModel quiet = model;
-  quiet.noise_band_power.clear();
+  quiet.noise_band_variance.clear();
   const std::size_t first = std::size_t(double(g.frames) * (1.0 - kTailShare));
   for (std::size_t s : train) {
-    const BarkSpectrogram pred = predict_spectrogram(quiet, data, s);
-    const BarkSpectrogram& meas = data.measured.strikes[s].spectrogram;
+    const BarkSpectrogram pred = predict_spectra(quiet, data, s)[kDecay];
+    const BarkSpectrogram& meas = data.measured.strikes[s].spectra[kDecay];
     for (std::size_t b = 0; b < g.bands; ++b) {
       std::vector<double> excess;
       for (std::size_t f = first; f < g.frames; ++f) excess.push_back(std::max(0.0, meas.at(f, b) - pred.at(f, b)));
       per_band[b].push_back(median(excess));
     }
   }
-  model.noise_band_power.assign(g.bands, 0.0);
-  for (std::size_t b = 0; b < g.bands; ++b) model.noise_band_power[b] = median(per_band[b]);
+  // Band power -> white-equivalent variance (the same noise seen at every resolution).
+  model.noise_band_variance.assign(g.bands, 0.0);
+  for (std::size_t b = 0; b < g.bands; ++b)
+    if (g.band_bins[b] > 0) model.noise_band_variance[b] = median(per_band[b]) / (g.window_energy * double(g.band_bins[b]));
 }
 
 Detection detect(const AuditData& data, const AuditModel& current) {
@@ -48,13 +50,13 @@ Detection detect(const AuditData& data, const AuditModel& current) {
 
 // White-noise standard deviation with the same total power (full scale 1).
 double white_sigma(const AuditData& data, const AuditModel& model) {
-  const SpectrogramGrid& g = data.measured.grid;
-  double power = 0.0, bins = 0.0;
-  for (std::size_t b = 0; b < g.bands; ++b) {
-    power += model.noise_band_power[b];
+  const SpectrogramGrid& g = data.measured.grids[kDecay];
+  double variance = 0.0, bins = 0.0;
+  for (std::size_t b = 0; b < g.bands && b < model.noise_band_variance.size(); ++b) {
+    variance += model.noise_band_variance[b] * double(g.band_bins[b]);
     bins += double(g.band_bins[b]);
   }
-  return bins > 0 ? std::sqrt(power / (bins * g.window_energy)) : 0.0;
+  return bins > 0 ? std::sqrt(variance / bins) : 0.0;
 }
 
 Parameters parameters(const AuditData& data, const AuditModel& model) {

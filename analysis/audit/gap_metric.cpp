@@ -27,13 +27,15 @@ double SpectrogramGrid::band_centre_hz(std::size_t band) const {
   return 0.5 * (lo + hi);
 }
 
-SpectrogramGrid make_grid(double fs, std::size_t samples) {
+SpectrogramGrid make_grid(double fs, std::size_t samples, double window_s, std::size_t span) {
   SpectrogramGrid g;
   g.sample_rate_hz = fs;
-  g.window = 256;
-  while (double(g.window) < 0.023 * fs) g.window *= 2;  // ~23 ms: 43 Hz bins resolve the first Bark band
+  g.samples = samples;
+  span = std::min(span, samples);
+  g.window = 64;
+  while (double(g.window) < window_s * fs) g.window *= 2;
   g.hop = g.window / 2;
-  g.frames = samples >= g.window ? 1 + (samples - g.window) / g.hop : 0;
+  g.frames = span >= g.window ? 1 + (span - g.window) / g.hop : 0;
   const std::size_t bins = g.window / 2 + 1;
   g.bin_band.assign(bins, -1);
   int max_band = 0;
@@ -80,24 +82,45 @@ BarkSpectrogram bark_spectrogram(const std::vector<float>& x, const SpectrogramG
   return s;
 }
 
-GapMap gap_map(const BarkSpectrogram& measured, const BarkSpectrogram& model, double floor_db) {
-  GapMap m;
-  m.frames = measured.frames;
-  m.bands = measured.bands;
-  m.diff_db.assign(measured.power.size(), std::numeric_limits<double>::quiet_NaN());
+Grids make_grids(double fs, std::size_t samples) {
+  return {make_grid(fs, samples), make_grid(fs, samples, kAttackWindowS, std::size_t(kAttackSpanS * fs))};
+}
+
+Spectra bark_spectra(const std::vector<float>& x, const Grids& grids) {
+  Spectra s;
+  for (std::size_t r = 0; r < kResolutions; ++r) s[r] = bark_spectrogram(x, grids[r]);
+  return s;
+}
+
+GapSum gap_sum(const BarkSpectrogram& measured, const BarkSpectrogram& model, double floor_db,
+               std::vector<double>* diff_db) {
+  GapSum g;
+  if (diff_db) diff_db->assign(measured.power.size(), std::numeric_limits<double>::quiet_NaN());
   double peak = -400.0;
   for (double p : measured.power) peak = std::max(peak, level_db(p));
   const double floor = peak - floor_db;
-  double sum = 0.0;
-  std::size_t count = 0;
   for (std::size_t i = 0; i < measured.power.size() && i < model.power.size(); ++i) {
     const double a = std::max(level_db(measured.power[i]), floor), b = std::max(level_db(model.power[i]), floor);
     if (a <= floor && b <= floor) continue;
-    m.diff_db[i] = b - a;
-    sum += std::abs(b - a);
-    ++count;
+    if (diff_db) (*diff_db)[i] = b - a;
+    g.sum_db += std::abs(b - a);
+    ++g.cells;
   }
-  m.gap_db = count > 0 ? sum / double(count) : 0.0;
+  return g;
+}
+
+GapMap gap_map(const Spectra& measured, const Spectra& model, double floor_db) {
+  GapMap m;
+  m.frames = measured[kDecay].frames;
+  m.bands = measured[kDecay].bands;
+  double sum = 0.0;
+  std::size_t cells = 0;
+  for (std::size_t r = 0; r < kResolutions; ++r) {
+    const GapSum g = gap_sum(measured[r], model[r], floor_db, r == kDecay ? &m.diff_db : nullptr);
+    sum += g.sum_db;
+    cells += g.cells;
+  }
+  m.gap_db = cells > 0 ? sum / double(cells) : 0.0;
   return m;
 }
 

@@ -177,7 +177,8 @@ HiddenCase generate_hidden_case(std::uint64_t seed, const std::vector<std::strin
     }
     drop_modes_at_or_above(m, 0.5 * fs);
     std::vector<float> y = render_bank(m, e, fs, frames);
-    reverb.seed = transient.seed = seed * 131u + s;
+    reverb.seed = seed * 131u + s;  // separate streams: one seed would correlate the two noises
+    transient.seed = reverb.seed ^ 0x5851f42d4c957f2dULL;
     add_reverb_and_transient(y, fs, reverb, transient);
     Recording r;
     r.name = "strike" + std::to_string(s + 1);

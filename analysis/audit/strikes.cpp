@@ -32,10 +32,10 @@ MeasuredStrikes prepare_strikes(const std::vector<Recording>& recordings, const 
   if (double(common) < options.min_duration_s * out.sample_rate_hz)
     throw AuditError("recordings last less than " + std::to_string(options.min_duration_s) +
                      " s after the strike; an audit needs the decay");
-  out.grid = make_grid(out.sample_rate_hz, common);
+  out.grids = make_grids(out.sample_rate_hz, common);
   for (Strike& s : out.strikes) {
     s.samples.resize(common);
-    s.spectrogram = bark_spectrogram(s.samples, out.grid);
+    s.spectra = bark_spectra(s.samples, out.grids);
   }
   return out;
 }

@@ -26,7 +26,7 @@ struct Strike {
   std::string name;
   std::vector<float> samples;  // from the onset, common length
   ExtractedFeatures features;
-  BarkSpectrogram spectrogram;
+  Spectra spectra;
 };
 
 struct StrikeOptions {
@@ -41,7 +41,7 @@ struct StrikeOptions {
 
 struct MeasuredStrikes {
   double sample_rate_hz = 0.0;
-  SpectrogramGrid grid;
+  Grids grids;
   std::vector<Strike> strikes;
 };
 

@@ -43,7 +43,7 @@ nlohmann::json result_json(const AuditResult& r, const audit::AuditData& data) {
       candidates.push_back({{"effect", c.effect}, {"tested", c.tested}, {"statistic", c.statistic},
                             {"detector_passes", c.detector_passes}, {"cv_gap", c.cv_gap_db},
                             {"improvement", c.improvement_db}, {"note", c.note}});
-  const audit::SpectrogramGrid& g = data.measured.grid;
+  const audit::SpectrogramGrid& g = data.measured.grids[audit::kDecay];
   nlohmann::json strikes = nlohmann::json::array();
   for (std::size_t s = 0; s < r.strikes; ++s)
     strikes.push_back({{"strike", data.measured.strikes[s].name}, {"gap_before", r.location.strike_gap_db[s]},

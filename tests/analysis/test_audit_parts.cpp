@@ -43,17 +43,40 @@ TEST(AuditGap, DoubleAmplitudeIsSixDecibels) {
     x[i] = float(N(rng));
     y[i] = 2.0f * x[i];
   }
-  const SpectrogramGrid g = make_grid(44100, x.size());
-  const BarkSpectrogram a = bark_spectrogram(x, g), b = bark_spectrogram(y, g);
+  const Grids g = make_grids(44100, x.size());
+  const Spectra a = bark_spectra(x, g), b = bark_spectra(y, g);
   EXPECT_NEAR(gap_map(a, a).gap_db, 0.0, 1e-12);
   const GapMap m = gap_map(a, b);
   EXPECT_NEAR(m.gap_db, 20.0 * std::log10(2.0), 1e-9);
   EXPECT_NEAR(m.diff_db[5 * m.bands + 10], 6.0206, 1e-3);
   // Model silent: every cell sits on the floor for the model, the gap is the measured level above it.
-  const BarkSpectrogram z = bark_spectrogram(std::vector<float>(x.size(), 0.0f), g);
+  const Spectra z = bark_spectra(std::vector<float>(x.size(), 0.0f), g);
   const GapMap silent = gap_map(a, z);
   EXPECT_GT(silent.gap_db, 20.0);
   EXPECT_LE(silent.gap_db, kGapFloorDb);
+}
+
+// The attack resolution: 2.9 ms frames (hop 1.45 ms) over the first 46 ms, next to the 23 ms frames.
+// A 3 ms burst on a ringing mode fills a tenth of one long frame; the short frames see it whole, so
+// it moves the pooled gap several times more than it moves the long frames' cells alone.
+TEST(AuditGap, AttackResolutionSeesAShortBurst) {
+  const double fs = 44100;
+  const Grids g = make_grids(fs, 66150);
+  EXPECT_EQ(g[kAttack].window, 128u);
+  EXPECT_EQ(g[kAttack].hop, 64u);
+  EXPECT_EQ(g[kAttack].frames, 1 + (std::size_t(kAttackSpanS * fs) - 128) / 64);
+  std::vector<float> ring(66150), burst(66150);
+  std::mt19937_64 rng(5);
+  std::normal_distribution<double> N(0, 0.05);
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const double t = double(i) / fs;
+    ring[i] = float(0.3 * std::exp(-3.0 * t) * std::sin(2 * M_PI * 880.0 * t));
+    burst[i] = ring[i] + float(i < 132 ? N(rng) : 0.0);
+  }
+  const Spectra clean = bark_spectra(ring, g), noisy = bark_spectra(burst, g);
+  const GapSum decay_only = gap_sum(noisy[kDecay], clean[kDecay]);
+  const double long_frames_gap = decay_only.sum_db / double(decay_only.cells);
+  EXPECT_GT(gap_map(noisy, clean).gap_db, 3.0 * long_frames_gap);
 }
 
 TEST(AuditMatching, MergesCloseModesAndDropsRareOnes) {
@@ -102,12 +125,14 @@ TEST(AuditBaseline, CleanStrikesAreExplainedAndTheModelRendersFromYaml) {
   const ParamSet p = parse_paramset(yaml, "model.yaml", ".");
   const RenderedStimulus out = render_stimulus(p);
   const std::size_t s = representative_strike(r.final_model);
-  const BarkSpectrogram spec = bark_spectrogram(out.audio.samples, data.measured.grid);
-  EXPECT_NEAR(gap_map(data.measured.strikes[s].spectrogram, spec).gap_db, r.after[s].gap_db, 0.05);
+  const Spectra spec = bark_spectra(out.audio.samples, data.measured.grids);
+  EXPECT_NEAR(gap_map(data.measured.strikes[s].spectra, spec).gap_db, r.after[s].gap_db, 0.05);
 }
 
 // The reverberation and residual_transient extensions: the expected band power the model adds is what
-// `modalstudy synth` renders from the augmented parameter set (one noise draw: within 0.5 dB).
+// `modalstudy synth` renders from the augmented parameter set. One noise draw scatters by decibels in
+// the attack's short frames (a few bins per band), so the rendered power is averaged over 8 seeds:
+// within 0.5 dB at both resolutions.
 TEST(AuditBaseline, ReverbAndTransientExtensionsRenderFromYaml) {
   const HiddenCase hc = generate_hidden_case(77, {}, {});
   const AuditData data = make_audit_data(hc.recordings);
@@ -118,15 +143,32 @@ TEST(AuditBaseline, ReverbAndTransientExtensionsRenderFromYaml) {
   m.transient_ms = 5.0;
   m.transient_level_db = -15.0;
   const std::string yaml = augmented_paramset_yaml(data, m, "test");
-  EXPECT_NE(yaml.find("reverb: {rt60_s: 0.6, level_db: -25, seed: 1}"), std::string::npos) << yaml;
-  EXPECT_NE(yaml.find("transient: {level_db: -15, duration_ms: 5, seed: 1}"), std::string::npos) << yaml;
-  const ParamSet p = parse_paramset(yaml, "model.yaml", ".");
+  EXPECT_NE(yaml.find("reverb: {rt60_s: 0.6, level_db: -25, seed: 2}"), std::string::npos) << yaml;
+  EXPECT_NE(yaml.find("transient: {level_db: -15, duration_ms: 5, seed: 3}"), std::string::npos) << yaml;
   const std::size_t s = representative_strike(m);
-  const BarkSpectrogram rendered = bark_spectrogram(render_stimulus(p).audio.samples, data.measured.grid);
-  const BarkSpectrogram predicted = predict_spectrogram(m, data, s);
-  EXPECT_LT(gap_map(predicted, rendered).gap_db, 0.5);
+  constexpr int kDraws = 8;
+  Spectra rendered{};
+  for (int seed = 1; seed <= kDraws; ++seed) {
+    std::string y = yaml;  // reverb and transient seeds 2 and 3 -> 2k and 2k + 1
+    y.replace(y.find("seed: 2}"), 8, "seed: " + std::to_string(2 * seed) + "}");
+    y.replace(y.find("seed: 3}"), 8, "seed: " + std::to_string(2 * seed + 1) + "}");
+    const Spectra one = bark_spectra(render_stimulus(parse_paramset(y, "model.yaml", ".")).audio.samples,
+                                     data.measured.grids);
+    for (std::size_t k = 0; k < kResolutions; ++k) {
+      if (seed == 1) rendered[k] = one[k];
+      else
+        for (std::size_t c = 0; c < one[k].power.size(); ++c) rendered[k].power[c] += one[k].power[c];
+    }
+  }
+  for (BarkSpectrogram& b : rendered)
+    for (double& p : b.power) p /= kDraws;
+  const Spectra predicted = predict_spectra(m, data, s);
+  for (std::size_t k = 0; k < kResolutions; ++k) {
+    const GapSum g = gap_sum(predicted[k], rendered[k]);
+    EXPECT_LT(g.sum_db / double(g.cells), 0.5) << "resolution " << k;
+  }
   // ... and it is a real change: the tail and burst move the model's spectrogram by decibels.
-  EXPECT_GT(gap_map(predict_spectrogram(r.final_model, data, s), predicted).gap_db, 2.0);
+  EXPECT_GT(gap_map(predict_spectra(r.final_model, data, s), predicted).gap_db, 2.0);
 }
 
 TEST(AuditBaseline, NamedEffectsRenderFromYaml) {
@@ -137,9 +179,9 @@ TEST(AuditBaseline, NamedEffectsRenderFromYaml) {
   const std::string yaml = augmented_paramset_yaml(data, r.final_model, "test");
   const ParamSet p = parse_paramset(yaml, "model.yaml", ".");
   const std::size_t s = representative_strike(r.final_model);
-  const BarkSpectrogram spec = bark_spectrogram(render_stimulus(p).audio.samples, data.measured.grid);
+  const Spectra spec = bark_spectra(render_stimulus(p).audio.samples, data.measured.grids);
   // Rendered noise is one draw, the model's is its expectation: within 0.5 dB of the model's gap.
-  EXPECT_NEAR(gap_map(data.measured.strikes[s].spectrogram, spec).gap_db, r.after[s].gap_db, 0.5);
+  EXPECT_NEAR(gap_map(data.measured.strikes[s].spectra, spec).gap_db, r.after[s].gap_db, 0.5);
   EXPECT_LT(r.gap_after_db, 0.5 * r.gap_before_db);
 }
 
@@ -149,19 +191,17 @@ TEST(AuditBaseline, NamedEffectsRenderFromYaml) {
 namespace ms::audit {
 namespace {
 
-// A strong attack burst is caught by the mode fit as fast pseudo-modes, which the plain model puts on
-// its damping law and so lets ring for the whole strike (a gap of ~5 dB). Naming residual_transient
-// replaces them by the burst: the tracks decaying >= 4x faster than the law go, and the gap shrinks
-// by more than half (tuning seed 1007: 12 modes, a 5.9 ms burst at -16.5 dB).
-TEST(AuditTransient, BurstReplacesThePseudoModesTheBaselineLetRing) {
+// A strong burst (tuning seed 1007: 5.9 ms at -16.5 dB re the direct sound): named first, fitted near
+// its true duration and level, and the gap (which sees the attack at 2.9 ms) shrinks by more than half.
+TEST(AuditTransient, StrongBurstIsNamedFittedAndExplained) {
   const HiddenCase hc = generate_hidden_case(1007, {"residual_transient"}, {0.9});
   const AuditData data = make_audit_data(hc.recordings);
   const AuditResult r = run_audit(data);
   ASSERT_FALSE(r.named.empty());
   EXPECT_EQ(r.named.front().effect, "residual_transient");
-  EXPECT_GT(r.gap_before_db, 3.0);
+  EXPECT_NEAR(r.final_model.transient_ms, 5.9, 0.3 * 5.9);
+  EXPECT_NEAR(r.final_model.transient_level_db, -16.5, 3.0);
   EXPECT_LT(r.gap_after_db, 0.5 * r.gap_before_db);
-  EXPECT_LT(r.final_model.modes.size(), r.baseline.modes.size());
   EXPECT_GE(r.final_model.modes.size(), 12u);  // the object's own modes stay
 }
 
