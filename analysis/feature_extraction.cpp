@@ -2,8 +2,6 @@
 #include "analysis/feature_extraction.hpp"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
 #include <complex>
 #include <numbers>
@@ -134,6 +132,10 @@ void merge_duplicates(std::vector<DampedComponent>& c, double fs) {
 // sees pairs). A real impact's modes start roughly in phase, so none exceeds the peak by this much.
 constexpr double kMaxAmpOverPeak = 3.0;
 
+// Attack blocks whose residual stands this far above its later level are attack noise (10 dB: a
+// room tail of RT60 0.2 s falls 3 dB per 10 ms, a clean strike's residual stays within 3 dB).
+constexpr double kAttackNoiseRatio = 10.0;
+
 bool overshoots(const DampedComponent& c, double peak) { return std::abs(c.b) > kMaxAmpOverPeak * peak; }
 
 }  // namespace
@@ -165,24 +167,26 @@ std::optional<std::string> recording_problem(const std::vector<float>& samples, 
   return std::nullopt;
 }
 
-ExtractedFeatures extract_features(const std::vector<float>& samples, double fs,
-                                   const ExtractOptions& options) {
-  ExtractedFeatures out;
-  out.sample_rate_hz = fs;
-  std::vector<double> x(samples.begin(), samples.end());
-  out.noise_sigma = estimate_noise_sigma(x);
-  out.noise_floor_db = noise_floor_db(out.noise_sigma);
-  const std::size_t onset = find_onset(x, out.noise_sigma);
-  out.onset_s = double(std::min(onset, x.size())) / fs;
-  if (onset + std::size_t(0.01 * fs) >= x.size()) return out;
-  const std::size_t skip = std::size_t(std::llround(options.skip_contact_s * fs));
-  const std::size_t start = std::min(onset + skip, x.size());
+namespace {
+
+// The modes of x from sample `start` on (steps 3-7 of the header), with the signal they were fitted to.
+struct ModalFit {
+  std::vector<double> signal;        // x from start, at most max_duration_s
+  std::vector<DampedComponent> comps;
+  NoiseEnvelope noise;               // the noise the fit assumed, per sample of signal
+};
+
+ModalFit fit_modes(const std::vector<double>& x, double fs, std::size_t start, double noise_sigma,
+                   const ExtractOptions& options) {
+  ModalFit fit;
+  start = std::min(start, x.size());
   const std::size_t frames = std::min(x.size() - start, std::size_t(options.max_duration_s * fs));
-  std::vector<double> s(x.begin() + std::ptrdiff_t(start), x.begin() + std::ptrdiff_t(start + frames));
+  fit.signal.assign(x.begin() + std::ptrdiff_t(start), x.begin() + std::ptrdiff_t(start + frames));
+  const std::vector<double>& s = fit.signal;
   // A floor keeps the order selection sane on noiseless (synthetic) input.
   double peak = 0.0;
   for (double v : s) peak = std::max(peak, std::abs(v));
-  const double sigma = std::max(out.noise_sigma, std::pow(10.0, -options.max_dynamic_range_db / 20.0) * peak);
+  const double sigma = std::max(noise_sigma, std::pow(10.0, -options.max_dynamic_range_db / 20.0) * peak);
   const double top_hz = 0.49 * fs;
 
   const std::size_t early = std::min(frames, std::size_t(options.wide_window_s * fs));
@@ -194,7 +198,8 @@ ExtractedFeatures extract_features(const std::vector<float>& samples, double fs,
   // Coloured noise: per-band levels from the recording's tail (noise_floor.hpp).
   const NoiseProfile noise = estimate_noise_profile(x, fs, sigma);
   // A room tail: noise that decays after the strike (noise_envelope.hpp).
-  const NoiseEnvelope tail = estimate_noise_envelope(s, fs, noise_energy);
+  fit.noise = estimate_noise_envelope(s, fs, noise_energy);
+  const NoiseEnvelope& tail = fit.noise;
   // Under a tail a component is judged by what it explains with the tail's weights, which needs the
   // residual of the fit it belongs to (empty without a tail: then its energy alone decides).
   auto residual_of = [&](const std::vector<double>& signal, const std::vector<DampedComponent>& c) {
@@ -241,7 +246,7 @@ ExtractedFeatures extract_features(const std::vector<float>& samples, double fs,
     keep_audible(rest, fast);
     found.insert(found.end(), fast.begin(), fast.end());
   };
-  std::vector<DampedComponent> comps;
+  std::vector<DampedComponent>& comps = fit.comps;
   scan(s, comps);
   refine_poles(s, comps, ro);
   merge_duplicates(comps, fs);
@@ -303,18 +308,64 @@ ExtractedFeatures extract_features(const std::vector<float>& samples, double fs,
       if (cost(alt) < cost(comps)) comps = std::move(alt);
     }
   }
-  if (std::getenv("MS_DEBUG_ATTACK")) {
-    const std::size_t blk = 64, nb = std::min<std::size_t>(frames / blk, 40);
-    const std::vector<double> r = subtract_components(s, comps, nb * blk);
-    std::vector<double> v(nb);
-    for (std::size_t k = 0; k < nb; ++k) { for (std::size_t n = k * blk; n < (k + 1) * blk; ++n) v[k] += r[n] * r[n]; v[k] /= blk; }
-    std::vector<double> late(v.begin() + 14, v.end()); std::sort(late.begin(), late.end());
-    const double ref = late[late.size() / 2];
-    std::fprintf(stderr, "attack residual re late (dB):");
-    for (std::size_t k = 0; k < 16; ++k) std::fprintf(stderr, " %.0f", 10 * std::log10(v[k] / ref));
-    std::fprintf(stderr, " | late %.1f dB re floor, %zu comps\n", 10 * std::log10(ref / noise_energy), comps.size());
+  return fit;
+}
+
+// Attack noise the modes cannot explain (a residual burst of the strike, a long contact): the span of
+// blocks of ~1.5 ms at the start where the fit's residual, relative to the noise it expected, stands
+// 10 dB above its own level 20-60 ms later; 0 when none does. Those samples are not modal: the fit
+// should start after them.
+std::size_t attack_noise_span(const ModalFit& fit, double fs, double max_skip_s) {
+  const std::size_t block = std::max<std::size_t>(8, std::size_t(std::lround(1.45e-3 * fs)));
+  const std::size_t blocks = std::min(fit.signal.size(), std::size_t(0.06 * fs)) / block;
+  const std::size_t late = std::size_t(0.02 * fs) / block;
+  if (blocks < late + 4) return 0;
+  const std::vector<double> r = subtract_components(fit.signal, fit.comps, blocks * block);
+  std::vector<double> excess(blocks);
+  // The noise envelope's first frame takes in a burst too: the expected noise is read from 20 ms on
+  // (a room tail of RT60 0.2 s is 6 dB louder before, under the 10 dB this looks for).
+  const std::size_t from = std::size_t(0.02 * fs);
+  for (std::size_t k = 0; k < blocks; ++k) {
+    double e = 0.0, expected = 0.0;
+    for (std::size_t n = k * block; n < (k + 1) * block; ++n) {
+      e += r[n] * r[n];
+      expected += fit.noise.at(std::max(n, from));
+    }
+    excess[k] = e / std::max(expected, 1e-300);
   }
-  for (auto& c : comps) {
+  std::vector<double> later(excess.begin() + std::ptrdiff_t(late), excess.end());
+  std::nth_element(later.begin(), later.begin() + std::ptrdiff_t(later.size() / 2), later.end());
+  const double level = later[later.size() / 2];
+  std::size_t span = 0;
+  for (std::size_t k = 0; k < late && double(k * block) < max_skip_s * fs; ++k)
+    if (excess[k] > kAttackNoiseRatio * level) span = (k + 1) * block;
+  return span;
+}
+
+}  // namespace
+
+ExtractedFeatures extract_features(const std::vector<float>& samples, double fs,
+                                   const ExtractOptions& options) {
+  ExtractedFeatures out;
+  out.sample_rate_hz = fs;
+  std::vector<double> x(samples.begin(), samples.end());
+  out.noise_sigma = estimate_noise_sigma(x);
+  out.noise_floor_db = noise_floor_db(out.noise_sigma);
+  const std::size_t onset = find_onset(x, out.noise_sigma);
+  out.onset_s = double(std::min(onset, x.size())) / fs;
+  if (onset + std::size_t(0.01 * fs) >= x.size()) return out;
+  std::size_t skip = std::size_t(std::llround(options.skip_contact_s * fs));
+  ModalFit fit = fit_modes(x, fs, onset + skip, out.noise_sigma, options);
+  // Noise at the attack that the modes cannot explain: start the fit after it (twice at most: a
+  // fit freed of one burst's pseudo-modes can show the burst's remainder).
+  for (int round = 0; round < 2 && options.max_attack_skip_s > 0.0; ++round) {
+    const std::size_t more = attack_noise_span(fit, fs, options.max_attack_skip_s - double(skip) / fs);
+    if (more == 0) break;
+    skip += more;
+    fit = fit_modes(x, fs, onset + skip, out.noise_sigma, options);
+  }
+  out.attack_skip_s = double(skip) / fs;
+  for (auto& c : fit.comps) {
     c.b *= std::exp(-c.s * double(skip));  // amplitude at the onset, not at the end of the contact
     Mode m;
     m.freq_hz = c.s.imag() * fs / kTwoPi;

@@ -16,7 +16,8 @@
 //     added and refit with its spectral neighbours, until nothing stands out of the noise;
 //  6. Sterling et al.'s clean-up: drop stationary hum (decay below hum_decay_per_s) and modes whose
 //     energy does not stand min_snr_db above the noise; refit the survivors;
-//  7. optionally (low_band_restart, CLI --thorough) a second start for the crowded low band.
+//  7. optionally (low_band_restart, CLI --thorough) a second start for the crowded low band;
+//  8. optionally (max_attack_skip_s) a restart after attack noise the modes cannot explain.
 #pragma once
 #include <cstddef>
 #include <optional>
@@ -40,6 +41,11 @@ struct ExtractOptions {
   // Samples right after the onset are the contact itself (a finite strike lasts ~0.1-2 ms) and are
   // not modal; fitting starts this long after the onset and amplitudes are extrapolated back to it.
   double skip_contact_s = 0.0;  // 0 for ideal impulses; the CLI defaults to 0.5 ms
+  // Noise at the attack the modes cannot explain (a residual burst of the strike, a contact longer
+  // than skip_contact_s): when the first fit's residual over the first ms stands 10 dB above its
+  // level 20-60 ms later, fitting restarts after it, up to this long after the onset. 0: off (ideal
+  // impulses, where every early sample is modal); the CLI and the audit default to 20 ms.
+  double max_attack_skip_s = 0.0;
   double max_duration_s = 4.0;   // analysis window after the onset
   double narrow_band_hz = 250.0; // core width of the narrow bands
   double wide_band_hz = 2000.0;  // core width of the wide bands
@@ -60,6 +66,7 @@ struct ExtractedFeatures {
   double onset_s = 0.0;
   double noise_sigma = 0.0;     // white-noise standard deviation (full scale = 1)
   double noise_floor_db = 0.0;  // 20 log10(noise_sigma), dB re full scale
+  double attack_skip_s = 0.0;   // fitting started this long after the onset (contact + attack noise)
   std::vector<Mode> modes;      // ascending frequency; phase relative to the onset
 };
 

@@ -16,6 +16,7 @@ MeasuredStrikes prepare_strikes(const std::vector<Recording>& recordings, const 
                        " Hz; resample the recordings to one rate first");
   ExtractOptions extract;
   extract.skip_contact_s = options.skip_contact_s;
+  extract.max_attack_skip_s = options.max_attack_skip_s;
   extract.max_dynamic_range_db = options.dynamic_range_db;
   std::size_t common = std::size_t(options.max_duration_s * out.sample_rate_hz);
   for (const Recording& r : recordings) {

@@ -37,6 +37,7 @@ struct StrikeOptions {
   // contact still has, which the contact fit needs (tuning seeds).
   double dynamic_range_db = 90.0;
   double skip_contact_s = 0.5e-3; // real strikes have a contact (see ExtractOptions)
+  double max_attack_skip_s = 20e-3; // ... and attack noise the modes cannot explain (see ExtractOptions)
 };
 
 struct MeasuredStrikes {

@@ -176,6 +176,7 @@ void register_audit(CLI::App& app) {
     bool json = false;
     double max_duration_s = 2.0;
     double skip_contact_ms = 0.5;
+    double attack_skip_ms = 20.0;
   };
   auto opt = std::make_shared<Options>();
   CLI::App* cmd = app.add_subcommand("audit", "Find where a model and recordings disagree and name the missing effect");
@@ -186,6 +187,8 @@ void register_audit(CLI::App& app) {
   cmd->add_option("--max-duration-s", opt->max_duration_s, "Analysed span after each onset (default 2)")
       ->check(CLI::Range(0.3, 30.0));
   cmd->add_option("--skip-contact-ms", opt->skip_contact_ms, "As for extract (default 0.5)")->check(CLI::Range(0.0, 20.0));
+  cmd->add_option("--max-attack-skip-ms", opt->attack_skip_ms, "As for extract (default 20; 0: off)")
+      ->check(CLI::Range(0.0, 100.0));
   cmd->add_flag("--json", opt->json, "Print one JSON object");
   cmd->callback([opt] {
     std::optional<ParamSet> given;
@@ -200,6 +203,7 @@ void register_audit(CLI::App& app) {
     audit::AuditOptions options;
     options.strikes.max_duration_s = opt->max_duration_s;
     options.strikes.skip_contact_s = opt->skip_contact_ms * 1e-3;
+    options.strikes.max_attack_skip_s = opt->attack_skip_ms * 1e-3;
     try {
       const audit::AuditData data = audit::make_audit_data(recordings, options);
       std::optional<ModalModel> model;

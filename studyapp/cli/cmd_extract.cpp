@@ -18,6 +18,7 @@ namespace ms::cli {
 void register_extract(CLI::App& app) {
   struct Options {
     double skip_contact_ms = 0.5;  // real strikes have a contact; 0 for ideal impulses
+    double attack_skip_ms = 20.0;  // noise at the attack the modes cannot explain; 0 turns it off
     std::vector<std::string> inputs;
     std::string output;
     int channel = -1;
@@ -33,6 +34,10 @@ void register_extract(CLI::App& app) {
                   "Start fitting this long after the onset (the strike's contact is not modal); "
                   "amplitudes are extrapolated back to the onset (default 0.5; 0 for ideal impulses)")
       ->check(CLI::Range(0.0, 20.0));
+  cmd->add_option("--max-attack-skip-ms", opt->attack_skip_ms,
+                  "Where the first fit leaves noise at the attack that no mode explains (a burst, a long "
+                  "contact), fit again from after it, up to this long after the onset (default 20; 0: off)")
+      ->check(CLI::Range(0.0, 100.0));
   cmd->add_flag("--json", opt->json, "Print one JSON object with every sound's modes");
   cmd->add_flag("--thorough", opt->thorough,
                 "Second start for crowded, heavily damped modes below 700 Hz (kept when the penalised fit "
@@ -50,6 +55,7 @@ void register_extract(CLI::App& app) {
         throw InputError(SourceLocation{path, 0, 0}, *problem);
       ExtractOptions options;
       options.skip_contact_s = opt->skip_contact_ms * 1e-3;
+      options.max_attack_skip_s = opt->attack_skip_ms * 1e-3;
       options.low_band_restart = opt->thorough;
       ExtractedFeatures f = extract_features(x, audio.sample_rate_hz, options);
       if (f.modes.empty()) throw InputError(SourceLocation{path, 0, 0}, "no modes found above the noise floor");
@@ -72,6 +78,7 @@ void register_extract(CLI::App& app) {
         sounds.push_back({{"sound", name},
                           {"sample_rate", f.sample_rate_hz},
                           {"onset_s", f.onset_s},
+                          {"fit_start_s", f.attack_skip_s},
                           {"noise_floor_db", f.noise_floor_db},
                           {"modes", modes}});
       }

@@ -17,13 +17,9 @@
 namespace ms::test {
 namespace {
 
-// Every effect is named in >= 90 % of the cases hiding it on seeds 8000-8159. residual_transient
-// reached 20 of 23 (87 %) until its extension replaced the burst's pseudo-modes (tuning seeds), then
-// 21 of 23 (91 %); damping_law, below the bar on 7000-7159 (75 %), reaches 22 of 22 with the
-// scatter-weighted detector.
-constexpr double kNamedBar = 0.9;
-// Over the cases hiding no residual_transient the gap shrinks by half in 98 of 101 (97 %): the bar.
-constexpr double kGapShrinkBar = 0.9;
+// The bars: each effect named in >= 90 % of the cases hiding it, nothing named in >= 90 % of
+// clean cases, the gap shrinking by >= 50 % in >= 90 % of the cases with an effect.
+constexpr double kNamedBar = 0.9, kQuietBar = 0.9, kGapShrinkBar = 0.9;
 
 // A seed range or count from the environment, or the default.
 std::size_t env_or(const char* name, std::size_t fallback) {
@@ -65,14 +61,15 @@ TEST(AuditHidden, DISABLED_AuditTuning) {
   EXPECT_GT(tally.clean, 0);
 }
 
-// Seeds 8000-8159: fresh when the damping_law detector changed (7000-7159 held out the first
-// seven-effect catalog, 5000-5119 the five-effect one; neither is reused). AUDIT_HELDOUT_FIRST runs
-// the same protocol on another range (to check a change on seeds nobody has looked at).
+// Seeds 10000-10239: fresh for the seven-effect catalog with reverberation hidden too, the gap at two
+// resolutions and the extraction's room-tail and attack-noise handling (5000-5119, 7000-7159,
+// 8000-8159 and 9000-9159 held out earlier versions and are not reused). AUDIT_HELDOUT_FIRST runs the
+// same protocol on another range (to check a change on seeds nobody has looked at).
 TEST(AuditHidden, HeldOutSeedsMeetTheBars) {
   Tally tally;
   const auto t0 = std::chrono::steady_clock::now();
-  const std::size_t cases = 160;
-  const std::size_t first = env_or("AUDIT_HELDOUT_FIRST", 8000);
+  const std::size_t cases = 240;
+  const std::size_t first = env_or("AUDIT_HELDOUT_FIRST", 10000);
   for (std::size_t i = 0; i < cases; ++i) {
     const CasePlan plan = plan_case(first + i, i, false);
     const auto r = audit_case(plan);
@@ -82,16 +79,11 @@ TEST(AuditHidden, HeldOutSeedsMeetTheBars) {
   tally.print();
   std::printf("%zu cases in %.1f s\n", cases, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   for (const auto& e : planned_effects()) {
-    ASSERT_GT(tally.hidden[e], 10) << e;
+    ASSERT_GT(tally.hidden[e], 20) << e;
     EXPECT_GE(double(tally.hit[e]), kNamedBar * tally.hidden[e]) << e;
   }
-  EXPECT_GE(double(tally.clean_quiet), 0.9 * tally.clean);
-  // With an effect present the gap shrinks by at least half in at least 90 % of the cases: missed
-  // overall (107 of 124, 86 %) because a burst of a few ms barely moves a gap of 23 ms frames (weak
-  // residual_transient cases start near 0.1 dB and stay there); asserted at the level reached, and
-  // at the bar over the cases hiding no residual_transient.
-  EXPECT_GE(double(tally.shrunk), 0.85 * tally.with_effect);
-  EXPECT_GE(double(tally.gap_shrunk), kGapShrinkBar * tally.with_gap_effect);
+  EXPECT_GE(double(tally.clean_quiet), kQuietBar * tally.clean);
+  EXPECT_GE(double(tally.shrunk), kGapShrinkBar * tally.with_effect);
 }
 
 }  // namespace
