@@ -76,7 +76,14 @@ void scan_bands(SubbandSplitter& split, const std::vector<Band>& bands, double f
     eo.window = std::clamp<std::size_t>(length / 3, 8, 64);
     eo.threshold_factor = threshold_factor;
     eo.max_order = eo.window - 4;
-    eo.noise_power = sig.noise_power;
+    // The covariance ESPRIT orders by averages the noise over the span: under a room tail, its mean.
+    double louder = 1.0;
+    if (!tail.flat()) {
+      double sum = 0.0;
+      for (std::size_t j = sig.settle; j < end; ++j) sum += tail.at(std::size_t(double(j) * fs / sig.rate_hz));
+      louder = std::max(1.0, sum / double(length) / tail.floor_variance);
+    }
+    eo.noise_power = sig.noise_power * louder;
     const auto poles = esprit(sig.samples.data() + sig.settle, length, eo);
     for (const cd& z : poles) {
       if (std::abs(z) <= 0.0) continue;

@@ -15,7 +15,9 @@ namespace ms::audit {
 namespace {
 
 constexpr int kRounds = 3;  // alternations contact <-> gains and mode shapes per grid point
-constexpr double kMinImprovementDb = 0.25;  // RMS amplitude residual, dB (tuning seeds)
+// RMS amplitude residual, dB. Tuning seeds: hidden contacts 1.35 and up, none 0.0012 at most (0.1 lies
+// in that gap; the real ride bell of test_audit_real reaches 0.23).
+constexpr double kMinImprovementDb = 0.1;
 
 std::vector<double> tau_grid() {
   std::vector<double> g{0.0};
@@ -69,11 +71,14 @@ void extend(const AuditData& data, AuditModel& model, const std::vector<std::siz
   double gref = 0.0;
   for (std::size_t s : train) gref = std::max(gref, model.gain[s]);
   model.contact_gain_ref = gref;
-  // Joint grid over (tau_ref, p); each point refits gains and shapes from the baseline's.
+  // Joint grid over (tau_ref, p); each point refits gains and shapes from the baseline's. p >= 0.1: the
+  // effect is a contact that shortens as the strike hardens; one the same for every strike is a fixed
+  // filter the mode shapes absorb, and fitting it (p = 0) only lets the contact's zeros chase the
+  // residuals of other effects (a real ride bell, once support damping was named, went to 4 ms).
   const AuditModel start = model;
   double best = 1e300, best_tau = 0.0, best_p = 0.0;
   for (double tau : tau_grid())
-    for (int k = 0; k <= 10; ++k) {
+    for (int k = 1; k <= 10; ++k) {
       AuditModel trial = start;
       trial.contact_s.assign(data.strike_count(), 0.0);
       trial.contact_gain_ref = gref;

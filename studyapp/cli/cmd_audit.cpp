@@ -37,12 +37,17 @@ nlohmann::json result_json(const AuditResult& r, const audit::AuditData& data) {
                      {"parameters", params},
                      {"evidence", n.evidence}});
   }
-  nlohmann::json candidates = nlohmann::json::array();
-  if (!r.rounds.empty())
-    for (const auto& c : r.rounds.front())
+  // Every round's candidates: the audit's whole decision trail (the first round is also given alone).
+  nlohmann::json rounds = nlohmann::json::array();
+  for (const auto& round : r.rounds) {
+    nlohmann::json candidates = nlohmann::json::array();
+    for (const auto& c : round)
       candidates.push_back({{"effect", c.effect}, {"tested", c.tested}, {"statistic", c.statistic},
                             {"detector_passes", c.detector_passes}, {"cv_gap", c.cv_gap_db},
                             {"improvement", c.improvement_db}, {"note", c.note}});
+    rounds.push_back(candidates);
+  }
+  const nlohmann::json candidates = rounds.empty() ? nlohmann::json::array() : rounds.front();
   const audit::SpectrogramGrid& g = data.measured.grids[audit::kDecay];
   nlohmann::json strikes = nlohmann::json::array();
   for (std::size_t s = 0; s < r.strikes; ++s)
@@ -76,6 +81,7 @@ nlohmann::json result_json(const AuditResult& r, const audit::AuditData& data) {
           {"modes", r.modes},
           {"named_effects", named},
           {"first_round", candidates},
+          {"rounds", rounds},
           {"locate", {{"strikes", strikes},
                       {"worst_bands", worst_bands},
                       {"worst_time_s", g.frame_time_s(worst_frame)},
