@@ -205,7 +205,7 @@ ModalFit fit_modes(const std::vector<double>& x, double fs, std::size_t start, d
   // Coloured noise: per-band levels from the recording's tail (noise_floor.hpp).
   const NoiseProfile noise = estimate_noise_profile(x, fs, sigma);
   // A room tail: noise that decays after the strike (noise_envelope.hpp).
-  fit.noise = estimate_noise_envelope(s, fs, noise_energy);
+  fit.noise = options.room_tail ? estimate_noise_envelope(s, fs, noise_energy) : NoiseEnvelope{0, {}, noise_energy};
   const NoiseEnvelope& tail = fit.noise;
   // Under a tail a component is judged by what it explains with the tail's weights, which needs the
   // residual of the fit it belongs to (empty without a tail: then its energy alone decides).

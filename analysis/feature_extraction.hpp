@@ -46,6 +46,9 @@ struct ExtractOptions {
   // level 20-60 ms later, fitting restarts after it, up to this long after the onset. 0: off (ideal
   // impulses, where every early sample is modal); the CLI and the audit default to 20 ms.
   double max_attack_skip_s = 0.0;
+  // A room tail (broadband noise decaying after the strike) is measured and candidates are weighed
+  // against it (noise_envelope.hpp); false: against the stationary floor only, as before it existed.
+  bool room_tail = true;
   double max_duration_s = 4.0;   // analysis window after the onset
   double narrow_band_hz = 250.0; // core width of the narrow bands
   double wide_band_hz = 2000.0;  // core width of the wide bands
