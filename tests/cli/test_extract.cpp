@@ -14,6 +14,7 @@
 #include <string>
 
 #include "synthesis/audio_file.hpp"
+#include "synthesis/effects.hpp"
 #include "synthesis/reference_renderer.hpp"
 
 namespace fs = std::filesystem;
@@ -120,6 +121,32 @@ TEST_F(ExtractCli, ThoroughKeepsASimpleSoundsModes) {
   ASSERT_EQ(modes.size(), 2u) << r.out;
   EXPECT_NEAR(modes[0]["freq_hz"].get<double>(), 523.0, 0.01);
   EXPECT_NEAR(modes[1]["decay_per_s"].get<double>(), 25.0, 0.25);
+}
+
+// A burst of attack noise (white, 6 ms of 60 dB decay, -20 dB re the strike): by default the fit
+// restarts after it (fit_start_s) and the two modes come back with their amplitudes (beside one fast
+// pseudo-mode of the burst's last trace: 3 modes); --max-attack-skip-ms 0 fits from the contact on and
+// takes the burst for extra modes (11); a value out of range is refused.
+TEST_F(ExtractCli, AttackNoiseIsSkippedUnlessTurnedOff) {
+  std::vector<float> x = two_mode_impact(1.0);
+  ms::add_reverb_and_transient(x, 44100.0, {}, {-20.0, 6.0, 4, true});
+  const fs::path wav = write("burst.wav", x);
+  const CliRun r = run("extract " + wav.string() + " --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto s = nlohmann::json::parse(r.out)["sounds"][0];
+  EXPECT_GT(s["fit_start_s"].get<double>(), 2e-3);
+  ASSERT_GE(s["modes"].size(), 2u) << r.out;
+  EXPECT_NEAR(s["modes"][0]["amp"].get<double>(), 0.4, 0.004);
+  EXPECT_NEAR(s["modes"][1]["amp"].get<double>(), 0.2, 0.002);
+  const CliRun off = run("extract " + wav.string() + " --json --max-attack-skip-ms 0");
+  ASSERT_EQ(off.code, 0) << off.err;
+  const auto t = nlohmann::json::parse(off.out)["sounds"][0];
+  EXPECT_NEAR(t["fit_start_s"].get<double>(), 0.5e-3, 1.0 / 44100.0);
+  std::printf("attack noise: %zu modes after the restart, %zu without\n", s["modes"].size(), t["modes"].size());
+  EXPECT_GT(t["modes"].size(), s["modes"].size() + 2) << off.out;
+  const CliRun bad = run("extract " + wav.string() + " --max-attack-skip-ms 500");
+  EXPECT_NE(bad.code, 0);
+  EXPECT_NE(bad.err.find("max-attack-skip-ms"), std::string::npos) << bad.err;
 }
 
 TEST_F(ExtractCli, StereoMixAndChannelChoice) {
