@@ -77,13 +77,13 @@ void scan_bands(SubbandSplitter& split, const std::vector<Band>& bands, double f
     eo.threshold_factor = threshold_factor;
     eo.max_order = eo.window - 4;
     // The covariance ESPRIT orders by averages the noise over the span: under a room tail, its mean.
-    double louder = 1.0;
+    double mean_louder = 1.0;
     if (!tail.flat()) {
       double sum = 0.0;
       for (std::size_t j = sig.settle; j < end; ++j) sum += tail.at(std::size_t(double(j) * fs / sig.rate_hz));
-      louder = std::max(1.0, sum / double(length) / tail.floor_variance);
+      mean_louder = std::max(1.0, sum / double(length) / tail.floor_variance);
     }
-    eo.noise_power = sig.noise_power * louder;
+    eo.noise_power = sig.noise_power * mean_louder;
     const auto poles = esprit(sig.samples.data() + sig.settle, length, eo);
     for (const cd& z : poles) {
       if (std::abs(z) <= 0.0) continue;
@@ -139,11 +139,11 @@ void merge_duplicates(std::vector<DampedComponent>& c, double fs) {
 // sees pairs). A real impact's modes start roughly in phase, so none exceeds the peak by this much.
 constexpr double kMaxAmpOverPeak = 3.0;
 
+bool overshoots(const DampedComponent& c, double peak) { return std::abs(c.b) > kMaxAmpOverPeak * peak; }
+
 // Attack blocks whose residual stands this far above its later level are attack noise (10 dB: a
 // room tail of RT60 0.2 s falls 3 dB per 10 ms, a clean strike's residual stays within 3 dB).
 constexpr double kAttackNoiseRatio = 10.0;
-
-bool overshoots(const DampedComponent& c, double peak) { return std::abs(c.b) > kMaxAmpOverPeak * peak; }
 
 }  // namespace
 

@@ -8,8 +8,9 @@
 
 namespace ms::audit {
 
-// Frame grid shared by every spectrogram of one audit: Hann window of ~23 ms (power of two), hop half
-// a window, Zwicker-Terhardt Bark bands [z, z+1) from 0 Bark up to Nyquist.
+// Frame grid of one time resolution, shared by every spectrogram of one audit at that resolution: Hann
+// window (power of two), hop half a window, Zwicker-Terhardt Bark bands [z, z+1) from 0 Bark up to
+// Nyquist (at the attack's 2.9 ms a band narrower than a 345 Hz bin may hold none).
 struct SpectrogramGrid {
   double sample_rate_hz = 0.0;
   std::size_t window = 0;
