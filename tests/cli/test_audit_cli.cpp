@@ -38,6 +38,13 @@ TEST(AuditCli, GenerateThenAuditNamesTheHiddenEffectAndWritesAReport) {
   EXPECT_LT(j["gap_after"].get<double>(), 0.5 * j["gap_before"].get<double>());
   EXPECT_NEAR(j["named_effects"][0]["parameters"]["alpha3"].get<double>(), 1.0, 0.6);
   EXPECT_NE(j["named_effects"][0]["evidence"].get<std::string>().find("hybrid"), std::string::npos);
+  // The decision trail: one round per named effect plus the last, where nothing passed; the first is
+  // also given alone, and in it damping_law passed its detector.
+  ASSERT_EQ(j["rounds"].size(), 2u) << r.out;
+  EXPECT_EQ(j["rounds"][0], j["first_round"]);
+  bool law_passed = false;
+  for (const auto& c : j["first_round"]) law_passed |= c["effect"] == "damping_law" && c["detector_passes"].get<bool>();
+  EXPECT_TRUE(law_passed);
   // Locate: per-strike gaps and per-mode residuals of every strike; a hidden law shows in the decays.
   ASSERT_EQ(j["locate"]["strikes"].size(), 5u);
   ASSERT_GE(j["locate"]["mode_residuals"].size(), 5u * 8u);
