@@ -25,6 +25,7 @@ MeasuredStrikes prepare_strikes(const std::vector<Recording>& recordings, const 
     s.name = r.name;
     s.features = extract_features(r.samples, r.sample_rate_hz, extract);
     if (s.features.modes.empty()) throw AuditError(r.name + ": no modes stand above the noise floor (silence?)");
+    s.attack_noise_s = std::max(0.0, s.features.attack_skip_s - options.skip_contact_s);
     const std::size_t onset = std::size_t(std::lround(s.features.onset_s * r.sample_rate_hz));
     s.samples.assign(r.samples.begin() + std::ptrdiff_t(std::min(onset, r.samples.size())), r.samples.end());
     common = std::min(common, s.samples.size());

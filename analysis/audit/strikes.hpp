@@ -26,6 +26,7 @@ struct Strike {
   std::string name;
   std::vector<float> samples;  // from the onset, common length
   ExtractedFeatures features;
+  double attack_noise_s = 0.0;  // how long after the contact the extraction found noise no mode explains
   Spectra spectra;
 };
 
