@@ -1,10 +1,11 @@
 // residual_transient: non-modal noise at the attack (the residual of Ren et al.), which no mode
 // produces. Detector: the measured high-frequency power (second difference) of the first 3 ms stands
 // above the log-linear decay of 10-30 ms extrapolated back by enough (modes, a noise floor or a room
-// tail follow that trend); median over strikes. It looks at the recording alone: a burst also biases
-// the fitted modes, so a model-relative statistic hides it, and the gap's 23 ms frames barely see a
-// few ms. Extension: a white burst (60 dB decay time and energy relative to the direct sound) fitted
-// on the training strikes; it follows each strike's gain. It replaces the burst's pseudo-modes: tracks
+// tail follow that trend), median over strikes; or by less where the extraction found attack noise no
+// mode explains after the contact in most strikes (Strike::attack_noise_s). Both look at the
+// recordings, not the model: a model-relative statistic would see a room tail's early part as well.
+// Extension: a white burst (60 dB decay time and energy relative to the direct sound) fitted on the
+// training strikes; it follows each strike's gain. It replaces any burst pseudo-modes left: tracks
 // the mode fit made of the burst's noise, which decay many times faster than the model's law and
 // which the plain model, putting every mode on the law, lets ring for the whole strike.
 #include <algorithm>
