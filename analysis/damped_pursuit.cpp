@@ -67,15 +67,17 @@ std::size_t damped_pursuit(const std::vector<double>& x, double fs, std::vector<
     for (std::size_t j = 0; j < env.size(); ++j) {
       for (std::size_t n = 0; n < window; ++n) in[n] = r[n] * env[j][n];
       fftw_execute(plan);
+      const double inv_env_noise = 1.0 / env_noise[j];  // once per decay, not per bin
       for (std::size_t k = k_lo; k <= k_hi; ++k) {
         const cd y(out[k][0], -out[k][1]);  // sum r[n] conj(e^{s n})
         // Least-squares energy of Re(b e^{s n}) with b = 2 conj-projection / envelope energy.
-        const double gain = 2.0 * std::norm(y) / env_energy[j] * std::min(inv_noise[k], 1.0 / env_noise[j]);
+        const double inv = std::min(inv_noise[k], inv_env_noise);
+        const double gain = 2.0 * std::norm(y) / env_energy[j] * inv;
         if (gain > best_gain) {
           best_gain = gain;
           best_s = cd(-o.decays_per_s[j], kTwoPi * double(k) * bin_hz) / fs;
           best_b = 2.0 * std::conj(y) / env_energy[j];
-          best_inv_noise = std::min(inv_noise[k], 1.0 / env_noise[j]);
+          best_inv_noise = inv;
         }
       }
     }
