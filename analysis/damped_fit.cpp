@@ -223,6 +223,28 @@ double fit_amplitudes(const std::vector<double>& x, std::vector<DampedComponent>
   return solve_amplitudes(energy(x), project(x, components), components, x.size());
 }
 
+Eigen::MatrixXd pole_gram(const std::vector<DampedComponent>& c, std::size_t frames) {
+  const std::size_t K = c.size();
+  Eigen::MatrixXd A(Eigen::Index(4 * K), Eigen::Index(4 * K));
+  std::vector<std::array<cd, 4>> alpha(K);
+  for (std::size_t k = 0; k < K; ++k) alpha[k] = {cd(1, 0), cd(0, 1), c[k].b, cd(0, 1) * c[k].b};
+  constexpr std::array<int, 4> pw{0, 0, 1, 1};
+  for (std::size_t j = 0; j < K; ++j)
+    for (std::size_t k = j; k < K; ++k) {
+      const auto tp = sums012(c[j].s + c[k].s, frames);
+      const auto tm = sums012(c[j].s + std::conj(c[k].s), frames);
+      for (std::size_t u = 0; u < 4; ++u)
+        for (std::size_t v = 0; v < 4; ++v) {
+          const std::size_t q = std::size_t(pw[u] + pw[v]);
+          const double val =
+              0.5 * (alpha[j][u] * alpha[k][v] * tp[q] + alpha[j][u] * std::conj(alpha[k][v]) * tm[q]).real();
+          A(Eigen::Index(4 * j + u), Eigen::Index(4 * k + v)) = val;
+          A(Eigen::Index(4 * k + v), Eigen::Index(4 * j + u)) = val;
+        }
+    }
+  return A;
+}
+
 double refine_poles(const std::vector<double>& x, std::vector<DampedComponent>& c,
                     const RefineOptions& options) {
   const std::size_t K = c.size(), N = x.size();
@@ -234,24 +256,11 @@ double refine_poles(const std::vector<double>& x, std::vector<DampedComponent>& 
   for (int iter = 0; iter < options.max_iterations; ++iter) {
     // Full Gram of the 4K columns Re(alpha n^p e^{s n}) and the gradient J^T (x - model).
     const Eigen::Index P = Eigen::Index(4 * K);
-    Eigen::MatrixXd A(P, P);
+    const Eigen::MatrixXd A = pole_gram(c, N);
     Eigen::VectorXd g(P);
     std::vector<std::array<cd, 4>> alpha(K);
     for (std::size_t k = 0; k < K; ++k) alpha[k] = {cd(1, 0), cd(0, 1), c[k].b, cd(0, 1) * c[k].b};
     constexpr std::array<int, 4> pw{0, 0, 1, 1};
-    for (std::size_t j = 0; j < K; ++j)
-      for (std::size_t k = j; k < K; ++k) {
-        const auto tp = sums012(c[j].s + c[k].s, N);
-        const auto tm = sums012(c[j].s + std::conj(c[k].s), N);
-        for (std::size_t u = 0; u < 4; ++u)
-          for (std::size_t v = 0; v < 4; ++v) {
-            const std::size_t q = std::size_t(pw[u] + pw[v]);
-            const double val =
-                0.5 * (alpha[j][u] * alpha[k][v] * tp[q] + alpha[j][u] * std::conj(alpha[k][v]) * tm[q]).real();
-            A(Eigen::Index(4 * j + u), Eigen::Index(4 * k + v)) = val;
-            A(Eigen::Index(4 * k + v), Eigen::Index(4 * j + u)) = val;
-          }
-      }
     for (std::size_t k = 0; k < K; ++k)
       for (std::size_t u = 0; u < 4; ++u) {
         const cd d = pw[u] == 0 ? pr.d0[k] : pr.d1[k];

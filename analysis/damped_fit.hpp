@@ -4,6 +4,7 @@
 // touch the samples. fit_amplitudes solves the linear problem for fixed poles; refine_poles runs a
 // Levenberg-Marquardt on all poles jointly (amplitudes re-solved at each trial: variable projection).
 #pragma once
+#include <Eigen/Core>
 #include <complex>
 #include <cstddef>
 #include <vector>
@@ -24,6 +25,11 @@ double fit_amplitudes(const std::vector<double>& x, std::vector<DampedComponent>
 // x[n] - sum_k Re(b_k e^{s_k n}) for n < frames (frames <= x.size()).
 std::vector<double> subtract_components(const std::vector<double>& x,
                                         const std::vector<DampedComponent>& components, std::size_t frames);
+
+// Gram matrix J^T J of the model's 4K columns per component k (rows 4k..4k+3): the derivatives by
+// Re b_k, Im b_k, Re s_k, Im s_k, over n < frames, in closed form. Over the white noise variance it is
+// the Fisher information of the parameters (mode_precision.hpp).
+Eigen::MatrixXd pole_gram(const std::vector<DampedComponent>& components, std::size_t frames);
 
 struct RefineOptions {
   int max_iterations = 8;

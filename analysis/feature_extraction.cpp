@@ -9,6 +9,7 @@
 #include "analysis/damped_fit.hpp"
 #include "analysis/damped_pursuit.hpp"
 #include "analysis/esprit.hpp"
+#include "analysis/mode_precision.hpp"
 #include "analysis/noise_envelope.hpp"
 #include "analysis/noise_floor.hpp"
 #include "analysis/onset.hpp"
@@ -181,6 +182,8 @@ struct ModalFit {
   std::vector<double> signal;        // x from start, at most max_duration_s
   std::vector<DampedComponent> comps;
   NoiseEnvelope noise;               // the noise the fit assumed, per sample of signal
+  double sigma = 0.0;                // white-noise std the fit assumed (floored on noiseless input)
+  NoiseProfile profile;              // coloured floor per band (empty when white)
 };
 
 ModalFit fit_modes(const std::vector<double>& x, double fs, std::size_t start, double noise_sigma,
@@ -194,6 +197,7 @@ ModalFit fit_modes(const std::vector<double>& x, double fs, std::size_t start, d
   double peak = 0.0;
   for (double v : s) peak = std::max(peak, std::abs(v));
   const double sigma = std::max(noise_sigma, std::pow(10.0, -options.max_dynamic_range_db / 20.0) * peak);
+  fit.sigma = sigma;
   const double top_hz = 0.49 * fs;
 
   const std::size_t early = std::min(frames, std::size_t(options.wide_window_s * fs));
@@ -203,7 +207,8 @@ ModalFit fit_modes(const std::vector<double>& x, double fs, std::size_t start, d
   // the early part (fast modes the narrow masks' kernels hide), each on what is still unexplained.
   const double noise_energy = sigma * sigma;
   // Coloured noise: per-band levels from the recording's tail (noise_floor.hpp).
-  const NoiseProfile noise = estimate_noise_profile(x, fs, sigma);
+  fit.profile = estimate_noise_profile(x, fs, sigma);
+  const NoiseProfile& noise = fit.profile;
   // A room tail: noise that decays after the strike (noise_envelope.hpp).
   fit.noise = options.room_tail ? estimate_noise_envelope(s, fs, noise_energy) : NoiseEnvelope{0, {}, noise_energy};
   const NoiseEnvelope& tail = fit.noise;
@@ -372,16 +377,31 @@ ExtractedFeatures extract_features(const std::vector<float>& samples, double fs,
     fit = fit_modes(x, fs, onset + skip, out.noise_sigma, options);
   }
   out.attack_skip_s = double(skip) / fs;
-  for (auto& c : fit.comps) {
+  // Error bars at the fitted values, before the amplitudes move to the onset (the bound does that).
+  const std::vector<ModePrecision> precision =
+      mode_precision(fit.comps, fit.signal.size(), fs, fit.sigma, double(skip));
+  std::vector<std::pair<Mode, ModePrecision>> found;
+  for (std::size_t k = 0; k < fit.comps.size(); ++k) {
+    DampedComponent& c = fit.comps[k];
     c.b *= std::exp(-c.s * double(skip));  // amplitude at the onset, not at the end of the contact
     Mode m;
     m.freq_hz = c.s.imag() * fs / kTwoPi;
     m.decay_per_s = -c.s.real() * fs;
     m.amp = std::abs(c.b);
     m.phase_rad = std::remainder(std::arg(c.b) + 0.5 * std::numbers::pi, kTwoPi);
-    out.modes.push_back(m);
+    // Under a coloured floor the mode's own band is what it is measured against.
+    const double louder = std::sqrt(std::max(1.0, fit.profile.variance_at(m.freq_hz) / (fit.sigma * fit.sigma)));
+    ModePrecision p = precision[k];
+    p.freq_sd_hz *= louder;
+    p.decay_sd_per_s *= louder;
+    p.amp_sd *= louder;
+    found.emplace_back(m, p);
   }
-  std::sort(out.modes.begin(), out.modes.end(), [](const Mode& a, const Mode& b) { return a.freq_hz < b.freq_hz; });
+  std::sort(found.begin(), found.end(), [](const auto& a, const auto& b) { return a.first.freq_hz < b.first.freq_hz; });
+  for (const auto& [m, p] : found) {
+    out.modes.push_back(m);
+    out.precision.push_back(p);
+  }
   return out;
 }
 

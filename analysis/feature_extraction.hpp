@@ -17,13 +17,15 @@
 //  6. Sterling et al.'s clean-up: drop stationary hum (decay below hum_decay_per_s) and modes whose
 //     energy does not stand min_snr_db above the noise; refit the survivors;
 //  7. optionally (low_band_restart, CLI --thorough) a second start for the crowded low band;
-//  8. optionally (max_attack_skip_s) a restart after attack noise the modes cannot explain.
+//  8. optionally (max_attack_skip_s) a restart after attack noise the modes cannot explain;
+//  9. every mode's error bars: the Cramer-Rao bound at the fitted values (mode_precision.hpp).
 #pragma once
 #include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "analysis/mode_precision.hpp"
 #include "synthesis/modal_model.hpp"
 
 namespace ms {
@@ -71,6 +73,9 @@ struct ExtractedFeatures {
   double noise_floor_db = 0.0;  // 20 log10(noise_sigma), dB re full scale
   double attack_skip_s = 0.0;   // fitting started this long after the onset (contact + attack noise)
   std::vector<Mode> modes;      // ascending frequency; phase relative to the onset
+  // Per mode (same order): the Cramer-Rao standard deviations at the fitted values under the
+  // measured noise (mode_precision.hpp), the error bars an efficient estimator would have.
+  std::vector<ModePrecision> precision;
 };
 
 // Why a recording cannot be analysed (silent, clipped, too short), or nothing when it can.

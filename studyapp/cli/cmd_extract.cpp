@@ -1,8 +1,10 @@
 // modalstudy extract WAV... [--json] [-o FEATURES.csv] [--channel N] [--thorough]
 // Modal features (freq_hz, decay_per_s, amp at the onset) of impact recordings; see
-// analysis/feature_extraction.hpp. Every file is checked before anything is written.
+// analysis/feature_extraction.hpp. Every file is checked before anything is written. --json adds every
+// mode's error bars (Cramer-Rao standard deviations, analysis/mode_precision.hpp).
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
@@ -73,8 +75,18 @@ void register_extract(CLI::App& app) {
       nlohmann::json sounds = nlohmann::json::array();
       for (const auto& [name, f] : results) {
         nlohmann::json modes = nlohmann::json::array();
-        for (const Mode& m : f.modes)
-          modes.push_back({{"freq_hz", m.freq_hz}, {"decay_per_s", m.decay_per_s}, {"amp", m.amp}});
+        // Error bars: Cramer-Rao standard deviations; null where the data do not determine the value.
+        auto sd = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
+        for (std::size_t k = 0; k < f.modes.size(); ++k) {
+          const Mode& m = f.modes[k];
+          const ModePrecision& p = f.precision[k];
+          modes.push_back({{"freq_hz", m.freq_hz},
+                           {"decay_per_s", m.decay_per_s},
+                           {"amp", m.amp},
+                           {"freq_sd_hz", sd(p.freq_sd_hz)},
+                           {"decay_sd_per_s", sd(p.decay_sd_per_s)},
+                           {"amp_sd", sd(p.amp_sd)}});
+        }
         sounds.push_back({{"sound", name},
                           {"sample_rate", f.sample_rate_hz},
                           {"onset_s", f.onset_s},

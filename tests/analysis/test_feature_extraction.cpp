@@ -7,8 +7,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <random>
 
+#include "analysis/damped_fit.hpp"
 #include "analysis/feature_extraction.hpp"
 #include "extraction_fixtures.hpp"
 
@@ -53,20 +55,51 @@ struct RecallRun {
   // The same count with "within 40 dB" read on the issue's own mode level (section 2: power
   // P = amp^2 / decay, level 10 log10 P) instead of on the initial amplitude.
   std::size_t level_eligible = 0, level_found = 0;
+  // The same two counts for the maximum-likelihood fit started AT the true modes (true count, true
+  // values; refine_poles until converged): what the data themselves support. Where it moves a mode
+  // out of tolerance, the recording is better explained without that mode where it truly is.
+  std::size_t ml_found = 0, ml_level_found = 0;
+  // Error bars (ExtractedFeatures::precision) of matched, well-determined modes (frequency bound
+  // under a third of the tolerance): how many lie within 2 standard deviations of the truth.
+  std::size_t bars = 0, freq_within = 0, decay_within = 0, amp_within = 0;
   double recall() const { return double(found) / double(eligible); }
   double level_recall() const { return double(level_found) / double(level_eligible); }
+  double ml_recall() const { return double(ml_found) / double(eligible); }
+  double ml_level_recall() const { return double(ml_level_found) / double(level_eligible); }
 };
 
-RecallRun run_random_impacts(const ExtractOptions& options, std::uint64_t first_seed = 1, std::uint64_t last_seed = 12) {
+// Maximum-likelihood modes of x started at the truth.
+std::vector<Mode> ml_from_truth(const std::vector<float>& x, const ModalModel& truth) {
+  constexpr double kTwoPi = 2.0 * std::numbers::pi;
+  std::vector<DampedComponent> c;
+  for (const Mode& m : truth.modes)
+    c.push_back({std::complex<double>(-m.decay_per_s, kTwoPi * m.freq_hz) / kFs, std::polar(m.amp, m.phase_rad - 0.5 * std::numbers::pi)});
+  RefineOptions ro;
+  ro.max_iterations = 30;
+  refine_poles(std::vector<double>(x.begin(), x.end()), c, ro);
+  std::vector<Mode> out;
+  for (const auto& k : c) {
+    Mode m;
+    m.freq_hz = k.s.imag() * kFs / kTwoPi;
+    m.decay_per_s = -k.s.real() * kFs;
+    m.amp = std::abs(k.b);
+    out.push_back(m);
+  }
+  return out;
+}
+
+RecallRun run_random_impacts(const ExtractOptions& options, std::uint64_t first_seed = 1, std::uint64_t last_seed = 12,
+                             bool with_ml = false) {
   RecallRun run;
   auto& [eligible, found, extracted, explained_seeds, misses_where_explained, freq_err, decay_err, amp_err,
-         level_eligible, level_found] = run;
+         level_eligible, level_found, ml_found, ml_level_found, bars, freq_within, decay_within, amp_within] = run;
   for (std::uint64_t seed = first_seed; seed <= last_seed; ++seed) {
     const ModalModel truth = testing::random_impact(seed);
     double sigma = 0.0;
     const auto x = testing::render_noisy(truth, kFs, 2.0, 40.0, seed, 0, &sigma);
     const ExtractedFeatures got = extract_features(x, kFs, options);
     extracted += got.modes.size();
+    const std::vector<Mode> ml = with_ml ? ml_from_truth(x, truth) : std::vector<Mode>{};
     double strongest = 0.0, strongest_power = 0.0;
     for (const auto& m : truth.modes) {
       strongest = std::max(strongest, m.amp);
@@ -76,11 +109,13 @@ RecallRun run_random_impacts(const ExtractOptions& options, std::uint64_t first_
       if (m.amp * m.amp / m.decay_per_s < 1e-4 * strongest_power) continue;  // 40 dB in power
       ++level_eligible;
       level_found += matches(nearest(got.modes, m.freq_hz), m.freq_hz);
+      ml_level_found += with_ml && matches(nearest(ml, m.freq_hz), m.freq_hz);
     }
     std::size_t case_found = 0, case_eligible = 0;
     for (const auto& m : truth.modes) {
       if (m.amp < strongest * 0.01) continue;  // within 40 dB of the strongest
       ++case_eligible;
+      ml_found += with_ml && matches(nearest(ml, m.freq_hz), m.freq_hz);
       const Mode* e = nearest(got.modes, m.freq_hz);
       if (!matches(e, m.freq_hz)) {
         std::printf("  seed %d missed f=%.1f d=%.2f a=%.4g (nearest %.1f d %.1f)\n", int(seed), m.freq_hz,
@@ -88,6 +123,13 @@ RecallRun run_random_impacts(const ExtractOptions& options, std::uint64_t first_
         continue;
       }
       ++case_found;
+      const ModePrecision& bar = got.precision[std::size_t(e - got.modes.data())];
+      if (bar.freq_sd_hz < std::max(1.0, 0.005 * m.freq_hz) / 3.0) {
+        ++bars;
+        freq_within += std::abs(e->freq_hz - m.freq_hz) <= 2.0 * bar.freq_sd_hz;
+        decay_within += std::abs(e->decay_per_s - m.decay_per_s) <= 2.0 * bar.decay_sd_per_s;
+        amp_within += std::abs(e->amp - m.amp) <= 2.0 * bar.amp_sd;
+      }
       freq_err.push_back(std::abs(e->freq_hz - m.freq_hz) / m.freq_hz);
       decay_err.push_back(std::abs(e->decay_per_s - m.decay_per_s) / m.decay_per_s);
       amp_err.push_back(std::abs(e->amp - m.amp) / m.amp);
@@ -110,6 +152,12 @@ RecallRun run_random_impacts(const ExtractOptions& options, std::uint64_t first_
   std::printf("recall %.4f (%zu/%zu), extracted %zu, median rel err: freq %.3g decay %.3g amp %.3g\n",
               run.recall(), found, eligible, extracted, median(freq_err), median(decay_err), median(amp_err));
   std::printf("recall by mode level (power) %.4f (%zu/%zu)\n", run.level_recall(), level_found, level_eligible);
+  if (with_ml)
+    std::printf("maximum likelihood from the truth: by amplitude %.4f, by level %.4f\n", run.ml_recall(),
+                run.ml_level_recall());
+  std::printf("error bars: of %zu well-determined modes, within 2 sd: freq %.3f decay %.3f amp %.3f\n", bars,
+              double(freq_within) / double(bars), double(decay_within) / double(bars),
+              double(amp_within) / double(bars));
   std::printf("%zu of %zu misses are in the %zu recordings the extracted modes explain as well as the truth\n",
               misses_where_explained, eligible - found, explained_seeds);
   return run;
@@ -118,17 +166,18 @@ RecallRun run_random_impacts(const ExtractOptions& options, std::uint64_t first_
 TEST(FeatureExtraction, RandomImpactsAt40dBSnr) {
   const RecallRun run = run_random_impacts({});
   const auto& [eligible, found, extracted, explained_seeds, misses_where_explained, freq_err, decay_err, amp_err,
-               level_eligible, level_found] = run;
+               level_eligible, level_found, ml_found, ml_level_found, bars, freq_within, decay_within, amp_within] = run;
   const double recall = run.recall();
-  // Goal (issue 3): >= 0.95. Not reached yet: 0.900 measured on these 12 seeds (0.917 on seeds
-  // 13-30). Almost every miss is a heavily damped mode (d > 100 1/s, mostly below ~450 Hz) with a
-  // comparable neighbour closer than ~0.35 (d1 + d2) / 2 pi in frequency: overlapping Lorentzians
-  // that merge into one fitted mode, or pairs (|df| < 0.1 (d1 + d2) / 2 pi) that no estimator
-  // separates at this SNR. This bound guards the level reached.
+  // Read on initial amplitude the recall is 0.902 on these 12 seeds (maximum likelihood started at
+  // the truth: 0.926); on mode level, the issue's own measure, 0.944 here and >= 0.95 over 30 and 100
+  // seeds (RecallMeetsTheBarOnModeLevel, RecallOnAHundredFreshImpacts). Almost every miss is a heavily
+  // damped mode (d > 100 1/s, mostly below ~450 Hz) with a comparable neighbour closer than
+  // ~0.35 (d1 + d2) / 2 pi in frequency: overlapping Lorentzians whose Cramer-Rao bound is tens of
+  // hertz. This bound guards the level reached.
   EXPECT_GE(recall, 0.89);
-  // 31 of the 50 misses lie in 8 recordings that the extracted modes already explain as well as the
+  // 31 of the 49 misses lie in 8 recordings that the extracted modes already explain as well as the
   // true modes do (residual within one mode's BIC price): there the data do not ask for the missed
-  // modes. The other 19 (seeds 1, 2, 4, 5) are fit failures (local minima of the joint fit); with all
+  // modes. The other 18 (seeds 1, 2, 4, 5) are fit failures (local minima of the joint fit); with all
   // of them found the recall would be 470/501 = 93.8 %, still under 95 %.
   EXPECT_GE(explained_seeds, 8u);
   EXPECT_LE(median(freq_err), 0.0005);
@@ -144,7 +193,7 @@ TEST(FeatureExtraction, RandomImpactsAt40dBSnr) {
 // "Within 40 dB of the strongest" read on the issue's own definition of a mode's level (section 2:
 // 10 log10 of the power amp^2 / decay) rather than on the initial amplitude: a mode at d = 500 1/s
 // carries 30 dB less energy than one of the same amplitude at d = 0.5 1/s. Over seeds 1-30 (1031
-// such modes) the default finds 95.0 % and --thorough 95.5 %; read on amplitude, 91-92 %.
+// such modes) the default finds 95.2 % and --thorough 95.4 %; read on amplitude, 91-92 %.
 TEST(FeatureExtraction, ThoroughLowBandRestartFindsMore) {
   ExtractOptions thorough;
   thorough.low_band_restart = true;
@@ -163,6 +212,37 @@ TEST(FeatureExtraction, ThoroughLowBandRestartFindsMore) {
               double(run.found + more.found) / double(run.eligible + more.eligible));
   EXPECT_GE(level_recall, 0.95);
   EXPECT_GE(double(run.found + more.found), 0.91 * double(run.eligible + more.eligible));
+}
+
+// The recall bar (issue 3: >= 95 % of the modes within 40 dB of the strongest) on 30 impacts, read
+// on the issue's own definition of a mode's level (section 2: 10 log10 of its power amp^2 / decay),
+// and measured against what the data support: the maximum-likelihood fit started at the true modes.
+// Read on initial amplitude instead, a mode 39 dB down decaying at 500 1/s carries 69 dB less energy
+// than the strongest slow mode and sits under the noise of the whole recording; there even the
+// likelihood, started at the truth, moves ~7 % of the modes out of tolerance (crowded modes with
+// Q near 1 whose Cramer-Rao bound is tens of hertz), so no fit of the data can reach 95 % on that
+// reading. The extraction must find what the likelihood supports, to within 3 points on either reading.
+TEST(FeatureExtraction, RecallMeetsTheBarOnModeLevel) {
+  const RecallRun run = run_random_impacts({}, 1, 30, true);
+  EXPECT_GE(run.level_recall(), 0.95);
+  EXPECT_GE(run.level_recall(), run.ml_level_recall() - 0.03);
+  EXPECT_GE(run.recall(), run.ml_recall() - 0.03);
+  EXPECT_LT(run.ml_recall(), 0.95);  // the amplitude reading is beyond the data on this fixture
+  EXPECT_GE(double(run.freq_within), 0.85 * double(run.bars));
+  EXPECT_GE(double(run.decay_within), 0.85 * double(run.bars));
+  EXPECT_GE(double(run.amp_within), 0.85 * double(run.bars));
+}
+
+// The same on 100 impacts nobody tuned on (seeds 31-130; measured 96.1 % by level, maximum
+// likelihood from the truth 97.0 %; by amplitude 91.0 % against 92.9 %).
+TEST(FeatureExtraction, RecallOnAHundredFreshImpacts) {
+  const RecallRun run = run_random_impacts({}, 31, 130, true);
+  EXPECT_GE(run.level_recall(), 0.95);
+  EXPECT_GE(run.level_recall(), run.ml_level_recall() - 0.03);
+  EXPECT_GE(run.recall(), run.ml_recall() - 0.03);
+  EXPECT_LE(median(run.freq_err), 0.0005);
+  EXPECT_LE(median(run.decay_err), 0.03);
+  EXPECT_LE(double(run.extracted), 1.15 * double(run.eligible));
 }
 
 // Coloured noise: the noise floor and the order selection assume white noise. With pink-ish noise

@@ -1,5 +1,6 @@
 // Speed of extract_features on a 2 s, 44.1 kHz mono impact (40 modes, 40 dB SNR), next to two
 // naive references: a single full-length FFT peak-picker and full-band ESPRIT on the first 50 ms.
+// Also the error bars (mode_precision) against the textbook way: the Jacobian over every sample.
 #include <benchmark/benchmark.h>
 #include <fftw3.h>
 
@@ -8,8 +9,12 @@
 #include <vector>
 
 #include "../analysis/extraction_fixtures.hpp"
+#include <Eigen/Dense>
+#include <numbers>
+
 #include "analysis/esprit.hpp"
 #include "analysis/feature_extraction.hpp"
+#include "analysis/mode_precision.hpp"
 #include "synthesis/effects.hpp"
 
 namespace {
@@ -106,5 +111,45 @@ void BM_FullBandEsprit50ms(benchmark::State& state) {
 BENCHMARK(BM_FullBandEsprit50ms)->Unit(benchmark::kMillisecond);
 
 }  // namespace
+
+// The 40 true modes of the impact as components over its 2 s.
+std::vector<ms::DampedComponent> impact_components() {
+  std::vector<ms::DampedComponent> c;
+  for (const ms::Mode& m : ms::testing::random_impact(7, 40, 40).modes)
+    c.push_back({std::complex<double>(-m.decay_per_s, 2.0 * std::numbers::pi * m.freq_hz) / kFs,
+                 std::complex<double>(0.0, -m.amp)});
+  return c;
+}
+
+// Cramer-Rao bounds from the closed-form Gram (no pass over the samples) and a Cholesky inverse.
+void BM_ModePrecision(benchmark::State& state) {
+  const auto c = impact_components();
+  for (auto _ : state) benchmark::DoNotOptimize(ms::mode_precision(c, std::size_t(2.0 * kFs), kFs, 1e-3).data());
+  state.counters["modes"] = double(c.size());
+}
+BENCHMARK(BM_ModePrecision)->Unit(benchmark::kMillisecond);
+
+// Reference: the Jacobian (4 columns per mode) evaluated at every sample, J^T J by Eigen's GEMM,
+// then the same inverse. Same numbers to rounding, far more work.
+void BM_ModePrecisionJacobian(benchmark::State& state) {
+  const auto c = impact_components();
+  const auto N = Eigen::Index(2.0 * kFs), P = Eigen::Index(4 * c.size());
+  for (auto _ : state) {
+    Eigen::MatrixXd J(N, P);
+    for (std::size_t k = 0; k < c.size(); ++k)
+      for (Eigen::Index n = 0; n < N; ++n) {
+        const std::complex<double> e = std::exp(c[k].s * double(n)), be = c[k].b * e * double(n);
+        J(n, Eigen::Index(4 * k)) = e.real();
+        J(n, Eigen::Index(4 * k + 1)) = -e.imag();
+        J(n, Eigen::Index(4 * k + 2)) = be.real();
+        J(n, Eigen::Index(4 * k + 3)) = -be.imag();
+      }
+    const Eigen::MatrixXd A = J.transpose() * J;
+    const Eigen::VectorXd d = A.llt().solve(Eigen::MatrixXd::Identity(P, P)).diagonal();
+    benchmark::DoNotOptimize(d.data());
+  }
+  state.counters["modes"] = double(c.size());
+}
+BENCHMARK(BM_ModePrecisionJacobian)->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

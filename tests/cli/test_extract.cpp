@@ -106,6 +106,14 @@ TEST_F(ExtractCli, CsvAndJsonCarryTheModes) {
   EXPECT_NEAR(s["modes"][1]["freq_hz"].get<double>(), 1870.0, 0.02);
   EXPECT_NEAR(s["modes"][1]["decay_per_s"].get<double>(), 25.0, 0.25);
   EXPECT_NEAR(s["modes"][1]["amp"].get<double>(), 0.2, 0.002);
+  // Error bars (Cramer-Rao): tiny at 80 dB SNR, larger for the weaker, faster mode, and the
+  // estimates lie within a few of them of the truth.
+  for (const char* key : {"freq_sd_hz", "decay_sd_per_s", "amp_sd"})
+    for (int k = 0; k < 2; ++k) EXPECT_GT(s["modes"][k][key].get<double>(), 0.0) << key;
+  const double f0_sd = s["modes"][0]["freq_sd_hz"].get<double>();
+  EXPECT_LT(f0_sd, 1e-3);
+  EXPECT_GT(s["modes"][1]["freq_sd_hz"].get<double>(), f0_sd);
+  EXPECT_LE(std::abs(s["modes"][0]["freq_hz"].get<double>() - 523.0), 5.0 * f0_sd);
   const std::string text = slurp(csv);
   EXPECT_EQ(text.rfind("sound,freq_hz,decay_per_s,amp\n", 0), 0u) << text;
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 3) << text;
