@@ -1,4 +1,4 @@
-// modalstudy extract WAV... [--json] [-o FEATURES.csv] [--channel N] [--thorough]
+// modalstudy extract WAV... [--json] [-o FEATURES.csv [--errors]] [--channel N] [--thorough]
 // Modal features (freq_hz, decay_per_s, amp at the onset) of impact recordings; see
 // analysis/feature_extraction.hpp. Every file is checked before anything is written. --json adds every
 // mode's error bars (Cramer-Rao standard deviations, analysis/mode_precision.hpp).
@@ -26,6 +26,7 @@ void register_extract(CLI::App& app) {
     int channel = -1;
     bool json = false;
     bool thorough = false;
+    bool errors = false;
   };
   auto opt = std::make_shared<Options>();
   CLI::App* cmd = app.add_subcommand("extract", "Extract modal features (f, d, amp) from impact recordings");
@@ -40,7 +41,10 @@ void register_extract(CLI::App& app) {
                   "Where the first fit leaves noise at the attack that no mode explains (a burst, a long "
                   "contact), fit again from after it, up to this long after the onset (default 20; 0: off)")
       ->check(CLI::Range(0.0, 100.0));
-  cmd->add_flag("--json", opt->json, "Print one JSON object with every sound's modes");
+  cmd->add_flag("--json", opt->json, "Print one JSON object with every sound's modes and their error bars");
+  cmd->add_flag("--errors", opt->errors,
+                "Add each mode's error bars (Cramer-Rao standard deviations) to the CSV: freq_sd_hz, "
+                "decay_sd_per_s, amp_sd (empty where the data do not determine the value)");
   cmd->add_flag("--thorough", opt->thorough,
                 "Second start for crowded, heavily damped modes below 700 Hz (kept when the penalised fit "
                 "improves): a few % more modes for ~70 % more time");
@@ -66,9 +70,24 @@ void register_extract(CLI::App& app) {
     if (!opt->output.empty()) {
       std::ostringstream csv;
       csv.precision(10);
-      csv << "sound,freq_hz,decay_per_s,amp\n";
+      csv << "sound,freq_hz,decay_per_s,amp" << (opt->errors ? ",freq_sd_hz,decay_sd_per_s,amp_sd" : "") << "\n";
+      // Empty where the data do not determine the value (an infinite bound).
+      auto cell = [&csv](double v) {
+        csv << ",";
+        if (std::isfinite(v)) csv << v;
+      };
       for (const auto& [name, f] : results)
-        for (const Mode& m : f.modes) csv << name << "," << m.freq_hz << "," << m.decay_per_s << "," << m.amp << "\n";
+        for (std::size_t k = 0; k < f.modes.size(); ++k) {
+          const Mode& m = f.modes[k];
+          csv << name << "," << m.freq_hz << "," << m.decay_per_s << "," << m.amp;
+          if (opt->errors) {
+            const ModePrecision& p = f.precision[k];
+            cell(p.freq_sd_hz);
+            cell(p.decay_sd_per_s);
+            cell(p.amp_sd);
+          }
+          csv << "\n";
+        }
       write_file_atomically(opt->output, csv.str());
     }
     if (opt->json) {

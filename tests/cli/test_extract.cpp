@@ -120,6 +120,31 @@ TEST_F(ExtractCli, CsvAndJsonCarryTheModes) {
   EXPECT_NE(text.find("\nbowl,523"), std::string::npos) << text;
 }
 
+// --errors adds the error bars to the CSV, which fit-damping still reads (by column name).
+TEST_F(ExtractCli, ErrorsAddColumnsTheOtherCommandsStillRead) {
+  const fs::path wav = write("bowl.wav", two_mode_impact(1.0, 0.25));
+  const fs::path csv = dir_ / "features.csv";
+  const CliRun r = run("extract " + wav.string() + " --errors -o " + csv.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string text = slurp(csv);
+  EXPECT_EQ(text.rfind("sound,freq_hz,decay_per_s,amp,freq_sd_hz,decay_sd_per_s,amp_sd\n", 0), 0u) << text;
+  ASSERT_EQ(std::count(text.begin(), text.end(), '\n'), 3) << text;
+  // Each row: 7 fields, the three error bars positive numbers.
+  std::istringstream rows(text);
+  std::string line;
+  std::getline(rows, line);
+  while (std::getline(rows, line)) {
+    std::vector<std::string> cells;
+    std::stringstream ss(line);
+    for (std::string c; std::getline(ss, c, ',');) cells.push_back(c);
+    ASSERT_EQ(cells.size(), 7u) << line;
+    for (std::size_t k = 4; k < 7; ++k) EXPECT_GT(std::stod(cells[k]), 0.0) << line;
+    EXPECT_LT(std::stod(cells[4]), 0.01) << line;  // freq_sd_hz at 80 dB SNR
+  }
+  const CliRun fit = run("fit-damping " + csv.string() + " --law rayleigh --estimator lsq --json");
+  EXPECT_EQ(fit.code, 0) << fit.err;
+}
+
 // --thorough adds a second start for the low band; on a clean two-mode sound it changes nothing.
 TEST_F(ExtractCli, ThoroughKeepsASimpleSoundsModes) {
   const fs::path wav = write("bowl.wav", two_mode_impact(1.0));
