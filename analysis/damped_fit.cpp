@@ -45,6 +45,7 @@ std::array<cd, 3> sums012(cd sigma, std::size_t frames) {
   sigma = {sigma.real(), im};
   const double N = double(frames);
   std::array<cd, 3> t{};
+  if (frames == 0) return t;  // an empty sum (the power-sum series would count n = 0)
   if (std::abs(sigma) * N < 0.05) {
     const auto& P = power_sums(frames);
     for (int p = 0; p < 3; ++p) {

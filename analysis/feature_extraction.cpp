@@ -389,12 +389,18 @@ ExtractedFeatures extract_features(const std::vector<float>& samples, double fs,
     m.decay_per_s = -c.s.real() * fs;
     m.amp = std::abs(c.b);
     m.phase_rad = std::remainder(std::arg(c.b) + 0.5 * std::numbers::pi, kTwoPi);
-    // Under a coloured floor the mode's own band is what it is measured against.
-    const double louder = std::sqrt(std::max(1.0, fit.profile.variance_at(m.freq_hz) / (fit.sigma * fit.sigma)));
+    // Under a coloured floor the mode's own band is what it is measured against; under a room tail,
+    // the tail over the samples that fix each parameter.
+    const double band = fit.profile.variance_at(m.freq_hz), white = fit.sigma * fit.sigma;
+    auto louder = [&](int power) {
+      const double seen = std::max(band, fit.noise.variance_seen(-c.s.real(), fit.signal.size(), power));
+      return std::sqrt(std::max(1.0, seen / white));
+    };
     ModePrecision p = precision[k];
-    p.freq_sd_hz *= louder;
-    p.decay_sd_per_s *= louder;
-    p.amp_sd *= louder;
+    const double late = louder(2);
+    p.freq_sd_hz *= late;
+    p.decay_sd_per_s *= late;
+    p.amp_sd *= louder(0);
     found.emplace_back(m, p);
   }
   std::sort(found.begin(), found.end(), [](const auto& a, const auto& b) { return a.first.freq_hz < b.first.freq_hz; });

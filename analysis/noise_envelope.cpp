@@ -56,6 +56,32 @@ double NoiseEnvelope::weighted_fit_gain(const std::vector<double>& residual, con
   return (a22 * r1 * r1 - 2.0 * a12 * r1 * r2 + a11 * r2 * r2) / det;
 }
 
+double NoiseEnvelope::variance_seen(double decay_per_sample, std::size_t frames, int power) const {
+  if (flat() || block == 0 || frames == 0) return floor_variance;
+  const std::complex<double> sigma(-2.0 * std::max(decay_per_sample, 0.0), 0.0);
+  // Weight of block [a, a + B): sum_m (a + m)^p q^{a + m} = q^a (T0 a^p + 2 T1 a [p = 2] + T2 [p = 2])
+  // with T_j = sum_{m < B} m^j q^m, the same for every block.
+  const double T0 = weighted_geometric_sum(0, sigma, block).real();
+  const double T1 = weighted_geometric_sum(1, sigma, block).real();
+  const double T2 = weighted_geometric_sum(2, sigma, block).real();
+  const double step = std::exp(sigma.real() * double(block));
+  double qa = 1.0, total = 0.0, weighted = 0.0;
+  std::size_t k = 0;
+  for (; k < variance.size() && (k + 1) * block <= frames; ++k, qa *= step) {
+    const double a = double(k * block);
+    const double w = power == 2 ? qa * (T0 * a * a + 2.0 * T1 * a + T2) : qa * T0;
+    total += w;
+    weighted += w * std::max(variance[k], floor_variance);
+  }
+  // The rest of the record (the floor, and a partial block if the record ends inside the envelope).
+  const std::size_t a = k * block;
+  const double whole = weighted_geometric_sum(power, sigma, frames).real();
+  const double rest = std::max(0.0, whole - total);
+  total = whole;
+  weighted += rest * (k < variance.size() && a < frames ? std::max(variance[k], floor_variance) : floor_variance);
+  return total > 0.0 ? weighted / total : floor_variance;
+}
+
 NoiseEnvelope estimate_noise_envelope(const std::vector<double>& x, double fs, double floor_variance) {
   NoiseEnvelope env;
   env.floor_variance = floor_variance;

@@ -29,6 +29,12 @@ struct NoiseEnvelope {
   // variances. Unlike its energy over the floor this does not credit a component fitted to loud
   // decaying noise with the energy its decay carries into quiet later samples it does not explain.
   double weighted_fit_gain(const std::vector<double>& residual, const DampedComponent& c) const;
+  // The white-noise variance with which an unweighted least-squares fit of a mode decaying by
+  // decay_per_sample (amplitude), over n < frames, estimates a parameter whose sensitivity grows as
+  // n^power (0: the amplitude; 2: frequency and decay, whose derivatives carry a factor n): the
+  // envelope averaged with weights n^power e^{-2 d n}. The floor when flat. A slow mode's amplitude
+  // is fixed by its first samples, where the tail is loud; its frequency by later ones.
+  double variance_seen(double decay_per_sample, std::size_t frames, int power) const;
 };
 
 // x: the analysed signal (its first sample is the time origin, e.g. the onset); floor_variance: the

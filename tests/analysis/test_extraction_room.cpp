@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <random>
 
 #include "analysis/feature_extraction.hpp"
@@ -72,11 +73,33 @@ TEST(NoiseEnvelope, WeightedFitGainCreditsWhatAComponentExplains) {
   EXPECT_GT(10.0 * std::log10(component_energy(fake, 0, n) / 1e-12), 60.0);   // what the floor alone would say
 }
 
+// variance_seen against a sample-by-sample sum: the envelope averaged with weights n^p e^{-2 d n}.
+TEST(NoiseEnvelope, VarianceSeenWeighsTheTailByWhereTheModeIsMeasured) {
+  const double loud = 1e-4, floor = 1e-8;
+  const std::size_t blocks = 100, block = 64, frames = 44100;
+  NoiseEnvelope tail{block, std::vector<double>(blocks), floor};
+  for (std::size_t k = 0; k < blocks; ++k) tail.variance[k] = loud * std::exp(-0.05 * double(k)) + floor;
+  EXPECT_DOUBLE_EQ((NoiseEnvelope{block, {}, floor}).variance_seen(1e-3, frames, 2), floor);
+  for (double d : {0.0, 2e-5, 2e-4, 5e-3})
+    for (int p : {0, 2}) {
+      double total = 0.0, weighted = 0.0;
+      for (std::size_t n = 0; n < frames; ++n) {
+        const double w = std::pow(double(n), p) * std::exp(-2.0 * d * double(n));
+        total += w;
+        weighted += w * tail.at(n);
+      }
+      EXPECT_NEAR(tail.variance_seen(d, frames, p) / (weighted / total), 1.0, 1e-6) << d << " " << p;
+    }
+  // A slow mode's amplitude (p = 0) sees more of the loud start than its frequency (p = 2) does.
+  EXPECT_GT(tail.variance_seen(1e-4, frames, 0), 3.0 * tail.variance_seen(1e-4, frames, 2));
+}
+
 // Impacts in a room: 12-25 modes (fixture of the kind), a white tail of RT60 0.3-0.8 s at
 // -40 dB re the direct sound, a floor 90 dB under the peak. Weighed against the tail, the extraction
 // keeps the modes that stand out of it and few others; against the floor only it returns hundreds.
 TEST(ExtractionRoom, RoomTailIsNotTakenForModes) {
   std::size_t strong = 0, found = 0, extracted = 0, extracted_floor_only = 0, truth_count = 0;
+  std::size_t bars = 0, within = 0;  // error bars of the strong modes found: within 2 sd of the truth
   for (std::uint64_t seed = 1; seed <= 4; ++seed) {
     const ModalModel truth = testing::random_impact(seed, 12, 25);
     std::vector<float> x = testing::render_noisy(truth, kFs, 2.0, 200.0, seed);
@@ -97,8 +120,19 @@ TEST(ExtractionRoom, RoomTailIsNotTakenForModes) {
     for (const Mode& m : truth.modes) {
       if (m.amp < 0.1 * strongest || m.decay_per_s > 100.0) continue;  // within 20 dB, ringing past the attack
       ++case_strong;
-      for (const Mode& e : got.modes)
-        if (std::abs(e.freq_hz - m.freq_hz) <= std::max(1.0, 0.005 * m.freq_hz)) { ++case_found; break; }
+      for (std::size_t k = 0; k < got.modes.size(); ++k) {
+        const Mode& e = got.modes[k];
+        if (std::abs(e.freq_hz - m.freq_hz) > std::max(1.0, 0.005 * m.freq_hz)) continue;
+        ++case_found;
+        ++bars;
+        if (std::getenv("ROOM_VERBOSE"))
+          std::printf("   f %.1f d %.1f: z_f %.2f z_d %.2f (sd_f %.3g)\n", m.freq_hz, m.decay_per_s,
+                      (e.freq_hz - m.freq_hz) / got.precision[k].freq_sd_hz,
+                      (e.decay_per_s - m.decay_per_s) / got.precision[k].decay_sd_per_s, got.precision[k].freq_sd_hz);
+        within += std::abs(e.freq_hz - m.freq_hz) <= 2.0 * got.precision[k].freq_sd_hz &&
+                  std::abs(e.decay_per_s - m.decay_per_s) <= 2.0 * got.precision[k].decay_sd_per_s;
+        break;
+      }
     }
     std::printf("room seed %d: %zu/%zu strong modes, %zu extracted (%zu against the floor only) of %zu true\n",
                 int(seed), case_found, case_strong, got.modes.size(), n_floor, truth.modes.size());
@@ -110,6 +144,11 @@ TEST(ExtractionRoom, RoomTailIsNotTakenForModes) {
   }
   EXPECT_GE(double(found), 0.9 * double(strong));
   EXPECT_LE(double(extracted), 1.2 * double(truth_count));
+  // Error bars in a room are an approximation (the unweighted fit's variance under the tail, per
+  // parameter, from where it is measured): 19 of 30 within 2 sd in both frequency and decay, 16
+  // with the stationary floor alone; the misses are slow modes whose estimates the tail biases.
+  std::printf("room: %zu of %zu strong modes within 2 sd in frequency and decay\n", within, bars);
+  EXPECT_GE(double(within), 0.55 * double(bars));
   EXPECT_GE(double(extracted_floor_only), 3.0 * double(truth_count));
 }
 
