@@ -31,7 +31,7 @@ void register_extract(CLI::App& app) {
   auto opt = std::make_shared<Options>();
   CLI::App* cmd = app.add_subcommand("extract", "Extract modal features (f, d, amp) from impact recordings");
   cmd->add_option("wav", opt->inputs, "Recordings (WAV/FLAC/AIFF)")->required();
-  cmd->add_option("-o,--output", opt->output, "Write FEATURES.csv (sound,freq_hz,decay_per_s,amp)");
+  CLI::Option* output = cmd->add_option("-o,--output", opt->output, "Write FEATURES.csv (sound,freq_hz,decay_per_s,amp)");
   cmd->add_option("--channel", opt->channel, "0-based channel to analyse (default: mix to mono)");
   cmd->add_option("--skip-contact-ms", opt->skip_contact_ms,
                   "Start fitting this long after the onset (the strike's contact is not modal); "
@@ -44,7 +44,8 @@ void register_extract(CLI::App& app) {
   cmd->add_flag("--json", opt->json, "Print one JSON object with every sound's modes and their error bars");
   cmd->add_flag("--errors", opt->errors,
                 "Add each mode's error bars (Cramer-Rao standard deviations) to the CSV: freq_sd_hz, "
-                "decay_sd_per_s, amp_sd (empty where the data do not determine the value)");
+                "decay_sd_per_s, amp_sd (empty where the data do not determine the value)")
+      ->needs(output);
   cmd->add_flag("--thorough", opt->thorough,
                 "Second start for crowded, heavily damped modes below 700 Hz (kept when the penalised fit "
                 "improves): a few % more modes for ~70 % more time");

@@ -143,6 +143,10 @@ TEST_F(ExtractCli, ErrorsAddColumnsTheOtherCommandsStillRead) {
   }
   const CliRun fit = run("fit-damping " + csv.string() + " --law rayleigh --estimator lsq --json");
   EXPECT_EQ(fit.code, 0) << fit.err;
+  // Without a CSV to write, --errors is a mistake, said in one line.
+  const CliRun alone = run("extract " + wav.string() + " --errors");
+  EXPECT_NE(alone.code, 0);
+  EXPECT_NE(alone.err.find("--errors"), std::string::npos) << alone.err;
 }
 
 // --thorough adds a second start for the low band; on a clean two-mode sound it changes nothing.
