@@ -170,10 +170,10 @@ TEST(FeatureExtraction, RandomImpactsAt40dBSnr) {
   const double recall = run.recall();
   // Read on initial amplitude the recall is 0.902 on these 12 seeds (maximum likelihood started at
   // the truth: 0.926); on mode level, the issue's own measure, 0.944 here and >= 0.95 over 130 seeds
-  // (RecallMeetsTheBarOnModeLevel). Almost every miss is a heavily
-  // damped mode (d > 100 1/s, mostly below ~450 Hz) with a comparable neighbour closer than
-  // ~0.35 (d1 + d2) / 2 pi in frequency: overlapping Lorentzians whose Cramer-Rao bound is tens of
-  // hertz. This bound guards the level reached.
+  // (RecallMeetsTheBarOnModeLevel). Almost every miss is a heavily damped mode (d > 100 1/s, mostly
+  // below ~450 Hz) with a comparable neighbour closer than ~0.35 (d1 + d2) / 2 pi in frequency:
+  // overlapping Lorentzians whose Cramer-Rao bound is tens of hertz. This bound guards the level
+  // reached.
   EXPECT_GE(recall, 0.89);
   // 31 of the 49 misses lie in 8 recordings that the extracted modes already explain as well as the
   // true modes do (residual within one mode's BIC price): there the data do not ask for the missed
