@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -31,6 +32,11 @@ struct StimulusSource {
   StimulusRef derive_from;            // kind == derived
   double lowpass_hz = 0.0;
   bool implicit = false;              // created by `anchors: auto`, not written by the author
+  // What an identification answer should be: attribute -> label ({shape: disc, material: metal}), or
+  // one label under the key "" (`truth: metal`). Exported as the `truth` column.
+  std::vector<std::pair<std::string, std::string>> truth;
+  // Design factors of the stimulus ({dataset: emg, shape: disc}), exported one column per factor.
+  std::vector<std::pair<std::string, std::string>> factors;
 };
 
 enum class BlockType { instructions, ab, mushra, magnitude, identify, rating, adjust, staircase,

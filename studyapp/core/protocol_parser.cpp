@@ -77,6 +77,19 @@ void flatten(const YamlReader& r, const YAML::Node& n, const std::string& prefix
   }
 }
 
+// A flat map name -> label ({shape: disc, material: metal}), in file order.
+std::vector<std::pair<std::string, std::string>> labels_map(const YamlReader& r, const YAML::Node& n,
+                                                            const std::string& path) {
+  if (!n.IsMap() || n.size() == 0) r.fail(n, path, "expected a map name -> label, e.g. {material: metal}");
+  std::vector<std::pair<std::string, std::string>> out;
+  for (auto it = n.begin(); it != n.end(); ++it) {
+    const std::string name = r.text(it->first, path);
+    if (name.empty()) r.fail(it->first, path, "empty name");
+    out.emplace_back(name, r.text(it->second, path + "." + name));
+  }
+  return out;
+}
+
 StimulusSource parse_stimulus(const YamlReader& r, const YAML::Node& key, const YAML::Node& n) {
   StimulusSource s;
   s.name = r.text(key, "stimuli");
@@ -86,24 +99,29 @@ StimulusSource parse_stimulus(const YamlReader& r, const YAML::Node& key, const 
   const int kinds = int(bool(n["paramset"])) + int(bool(n["derive"])) + int(bool(n["file"]));
   if (kinds != 1) r.fail(n, path, "needs exactly one of 'paramset', 'derive' or 'file'");
   if (n["paramset"]) {
-    r.check_keys(n, path, {"paramset", "set", "prune"});
+    r.check_keys(n, path, {"paramset", "set", "prune", "truth", "factors"});
     s.kind = StimulusKind::paramset;
     s.path = r.text(n["paramset"], path + ".paramset");
     s.path_where = r.where(n["paramset"], path + ".paramset");
     if (n["set"]) flatten(r, n["set"], "", path + ".set", s.overrides);
     if (n["prune"]) flatten(r, n["prune"], "prune", path + ".prune", s.overrides);
   } else if (n["derive"]) {
-    r.check_keys(n, path, {"derive", "lowpass_hz"});
+    r.check_keys(n, path, {"derive", "lowpass_hz", "truth", "factors"});
     s.kind = StimulusKind::derived;
     s.derive_from = ref(r, n["derive"], path + ".derive");
     if (!n["lowpass_hz"]) r.fail(n, path, "a derived stimulus needs 'lowpass_hz'");
     s.lowpass_hz = r.positive(n["lowpass_hz"], path + ".lowpass_hz");
   } else {
-    r.check_keys(n, path, {"file"});
+    r.check_keys(n, path, {"file", "truth", "factors"});
     s.kind = StimulusKind::file;
     s.path = r.text(n["file"], path + ".file");
     s.path_where = r.where(n["file"], path + ".file");
   }
+  if (n["truth"]) {
+    if (n["truth"].IsScalar()) s.truth.emplace_back("", r.text(n["truth"], path + ".truth"));
+    else s.truth = labels_map(r, n["truth"], path + ".truth");
+  }
+  if (n["factors"]) s.factors = labels_map(r, n["factors"], path + ".factors");
   return s;
 }
 
