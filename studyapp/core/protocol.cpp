@@ -49,7 +49,10 @@ std::vector<StimulusRef> Block::referenced() const {
   }
   if (const auto* i = std::get_if<IdentifyBlock>(&body)) out.insert(out.end(), i->stimuli.begin(), i->stimuli.end());
   if (const auto* r = std::get_if<RatingBlock>(&body)) out.insert(out.end(), r->stimuli.begin(), r->stimuli.end());
-  if (const auto* a = std::get_if<AdjustBlock>(&body)) out.push_back(a->paramset);
+  if (const auto* a = std::get_if<AdjustBlock>(&body)) {
+    out.push_back(a->paramset);
+    if (a->target) out.push_back(*a->target);
+  }
   if (const auto* s = std::get_if<StaircaseBlock>(&body)) {
     out.push_back(s->stimulus);
     if (s->reference) out.push_back(*s->reference);

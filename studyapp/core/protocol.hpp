@@ -85,11 +85,14 @@ struct Slider {
   std::string key;  // dotted parameter-set key, e.g. damping.alpha1
   double min = 0.0, max = 1.0;
   SourceLocation where;
+  std::string label = {}, low = {}, high = {};  // what the participant reads: its name and end labels
+  bool show_value = false;       // show the parameter's value beside the slider
 };
 // `paramset` names a stimulus whose source is a parameter set; sliders override its keys live.
 struct AdjustBlock {
   StimulusRef paramset;
   std::vector<Slider> sliders;
+  std::optional<StimulusRef> target;  // a stimulus to match, playable beside the adjusted sound
 };
 // Transformed up-down staircase (Levitt 1971). Default 2-down-1-up: converges on 70.7 % correct.
 // Each step plays the reference, then A and B in random order: one is the reference, the other the
@@ -124,7 +127,9 @@ struct Block {
   bool training = false;
   int break_after = 0;         // trials between breaks; 0 = none
   int repeats = 1;
-  bool listen_all = true;      // mushra/rating: every sound must be played before answering
+  bool listen_all = true;      // every sound must be played (MUSHRA: every slider moved) before answering
+  std::string prompt;          // the participant's task ("" = the view's wording for the block type)
+  bool feedback = false;       // after each answer, say whether it was right (training blocks)
   BlockBody body;
 
   // Every stimulus the block names (for validation and scheduling).

@@ -136,7 +136,7 @@ BlockBody parse_body(const YamlReader& r, const YAML::Node& n, const std::string
       return InstructionsBlock{r.text(req("text"), p + ".text")};
     }
     case BlockType::ab: {
-      r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "mode", "pairs"});
+      r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "listen_all", "prompt", "feedback", "mode", "pairs"});
       AbBlock ab;
       if (n["mode"]) {
         const std::string m = r.text(n["mode"], p + ".mode");
@@ -170,7 +170,7 @@ BlockBody parse_body(const YamlReader& r, const YAML::Node& n, const std::string
     }
     case BlockType::mushra: {
       r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "listen_all", "reference",
-                          "conditions", "anchors"});
+                          "conditions", "anchors", "prompt", "feedback"});
       MushraBlock m;
       if (n["reference"]) m.reference = ref(r, n["reference"], p + ".reference");
       m.conditions = refs(r, n["conditions"], p + ".conditions");
@@ -182,7 +182,7 @@ BlockBody parse_body(const YamlReader& r, const YAML::Node& n, const std::string
     }
     case BlockType::magnitude: {
       r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "modulus", "pairs",
-                          "stimuli"});
+                          "stimuli", "listen_all", "prompt", "feedback"});
       MagnitudeBlock g;
       g.modulus = pair(r, req("modulus"), p + ".modulus");
       g.stimuli = refs(r, n["stimuli"], p + ".stimuli");
@@ -197,12 +197,13 @@ BlockBody parse_body(const YamlReader& r, const YAML::Node& n, const std::string
       return g;
     }
     case BlockType::identify: {
-      r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "stimuli", "labels"});
+      r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "stimuli", "labels",
+                          "listen_all", "prompt", "feedback"});
       return IdentifyBlock{refs(r, n["stimuli"], p + ".stimuli"), texts(r, n["labels"], p + ".labels")};
     }
     case BlockType::rating: {
       r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "listen_all", "stimuli",
-                          "attributes"});
+                          "attributes", "prompt", "feedback"});
       RatingBlock rb;
       rb.stimuli = refs(r, n["stimuli"], p + ".stimuli");
       const YAML::Node at = req("attributes");
@@ -220,24 +221,31 @@ BlockBody parse_body(const YamlReader& r, const YAML::Node& n, const std::string
       return rb;
     }
     case BlockType::adjust: {
-      r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "paramset", "sliders"});
+      r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "paramset", "sliders",
+                          "target", "listen_all", "prompt", "feedback"});
       AdjustBlock ad;
       ad.paramset = ref(r, req("paramset"), p + ".paramset");
+      if (n["target"]) ad.target = ref(r, n["target"], p + ".target");
       const YAML::Node sl = n["sliders"];
       if (sl && !sl.IsSequence()) r.fail(sl, p + ".sliders", "expected a list of {key, min, max}");
       for (std::size_t i = 0; sl && i < sl.size(); ++i) {
         const std::string sp = idx(p + ".sliders", i);
-        r.check_keys(sl[i], sp, {"key", "min", "max"});
+        r.check_keys(sl[i], sp, {"key", "min", "max", "label", "low", "high", "show_value"});
         Slider s{r.text(sl[i]["key"], sp + ".key"), r.number(sl[i]["min"], sp + ".min"),
                  r.number(sl[i]["max"], sp + ".max"), r.where(sl[i]["key"], sp + ".key")};
         if (!(s.min < s.max)) r.fail(sl[i]["max"], sp + ".max", "must be greater than min");
+        if (sl[i]["label"]) s.label = r.text(sl[i]["label"], sp + ".label");
+        if (sl[i]["low"]) s.low = r.text(sl[i]["low"], sp + ".low");
+        if (sl[i]["high"]) s.high = r.text(sl[i]["high"], sp + ".high");
+        if (sl[i]["show_value"]) s.show_value = flag(r, sl[i]["show_value"], sp + ".show_value");
         ad.sliders.push_back(s);
       }
       return ad;
     }
     case BlockType::staircase: {
       r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "stimulus",
-                          "reference", "parameter", "start", "step", "down_up", "reversals"});
+                          "reference", "parameter", "start", "step", "down_up", "reversals",
+                          "listen_all", "prompt", "feedback"});
       StaircaseBlock s;
       s.stimulus = ref(r, req("stimulus"), p + ".stimulus");
       if (n["reference"]) s.reference = ref(r, n["reference"], p + ".reference");
@@ -255,7 +263,7 @@ BlockBody parse_body(const YamlReader& r, const YAML::Node& n, const std::string
       return s;
     }
     case BlockType::questionnaire: {
-      r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "questions"});
+      r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "questions", "prompt"});
       QuestionnaireBlock q;
       const YAML::Node qs = n["questions"];
       if (qs && !qs.IsSequence()) r.fail(qs, p + ".questions", "expected a list of questions");
@@ -301,6 +309,8 @@ Block parse_block(const YamlReader& r, const YAML::Node& n, std::size_t index) {
   if (n["training"]) b.training = flag(r, n["training"], p + ".training");
   if (n["break_after"]) b.break_after = count(r, n["break_after"], p + ".break_after", 0, 100000);
   if (n["listen_all"]) b.listen_all = flag(r, n["listen_all"], p + ".listen_all");
+  if (n["prompt"]) b.prompt = r.text(n["prompt"], p + ".prompt");
+  if (n["feedback"]) b.feedback = flag(r, n["feedback"], p + ".feedback");
   if (n["repeats"]) b.repeats = count(r, n["repeats"], p + ".repeats", 1, 1000);
   if (b.type != BlockType::unknown) b.body = parse_body(r, n, p, b);
   return b;
