@@ -12,4 +12,8 @@ void write_atomically(const std::string& path, const std::function<void(const st
 // Convenience for text/binary content held in memory.
 void write_file_atomically(const std::string& path, const std::string& content);
 
+// From now on SIGINT and SIGTERM first remove the temporaries of writes in progress, then end the
+// process as the signal would have (programs call this once; a library never installs handlers).
+void remove_temporaries_on_signals();
+
 }  // namespace ms

@@ -2,11 +2,18 @@
 
 #include <sndfile.h>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
 #include <cmath>
-#include <filesystem>
+#include <cstdint>
+#include <cstring>
+#include <optional>
 #include <stdexcept>
 
 #include "synthesis/atomic_file.hpp"
+#include "synthesis/bounded_file.hpp"
 #include "synthesis/input_error.hpp"
 
 namespace ms {
@@ -27,20 +34,82 @@ std::string to_string(SampleFormat format) {
   return "?";
 }
 
+namespace {
+
+std::uint32_t le32(const unsigned char* b) {
+  return std::uint32_t(b[0]) | std::uint32_t(b[1]) << 8 | std::uint32_t(b[2]) << 16 | std::uint32_t(b[3]) << 24;
+}
+
+// libsndfile reads a RIFF WAV whose data chunk claims more bytes than the file holds as if it were
+// whole (it shortens the length without a word), and one whose header claims no samples as empty:
+// both are files a writer never finished (a copy cut short, a stream captured to disk). Walks the
+// chunk headers only.
+std::optional<std::string> wav_header_problem(int fd, std::uint64_t file_size) {
+  unsigned char head[12];
+  if (::pread(fd, head, sizeof head, 0) != ssize_t(sizeof head)) return std::nullopt;
+  if (std::memcmp(head, "RIFF", 4) != 0 || std::memcmp(head + 8, "WAVE", 4) != 0) return std::nullopt;
+  std::uint64_t offset = 12;
+  for (int chunks = 0; chunks < 4096 && offset + 8 <= file_size; ++chunks) {
+    unsigned char chunk[8];
+    if (::pread(fd, chunk, sizeof chunk, off_t(offset)) != ssize_t(sizeof chunk)) return std::nullopt;
+    const std::uint64_t size = le32(chunk + 4);
+    if (std::memcmp(chunk, "data", 4) == 0) {
+      const std::uint64_t present = file_size - (offset + 8);
+      if (size > present)
+        return "truncated: the WAV header declares " + std::to_string(size) + " bytes of samples but only " +
+               std::to_string(present) + " follow (the file was cut short or its header is wrong)";
+      if (size == 0 && present > 0)
+        return "the WAV header declares no samples but " + std::to_string(present) +
+               " bytes follow (a header its writer never completed)";
+      return std::nullopt;
+    }
+    offset += 8 + size + (size & 1);
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 Audio read_audio(const std::string& path) {
   const SourceLocation where{path, 0, 0};
-  if (!std::filesystem::exists(path)) throw InputError(where, "no such file");
-  if (std::filesystem::is_directory(path)) throw InputError(where, "is a folder, not an audio file");
+  const int fd = open_bounded_file(path, kAudioFileLimit);
+  struct stat st {};
+  const std::uint64_t file_size = ::fstat(fd, &st) == 0 ? std::uint64_t(st.st_size) : 0;
+  if (const auto problem = wav_header_problem(fd, file_size)) {
+    ::close(fd);
+    throw InputError(where, *problem);
+  }
   SF_INFO info{};
-  SNDFILE* file = sf_open(path.c_str(), SFM_READ, &info);
+  SNDFILE* file = sf_open_fd(fd, SFM_READ, &info, SF_TRUE);  // closes fd, also on failure
   if (!file) throw InputError(where, std::string("not a readable audio file (") + sf_strerror(nullptr) + ")");
+  if (info.channels <= 0 || info.frames < 0 || info.samplerate <= 0) {
+    sf_close(file);
+    throw InputError(where, "not a readable audio file (no channels, frames or sample rate)");
+  }
+  if (std::uint64_t(info.frames) * std::uint64_t(info.channels) > kMaxAudioSamples) {
+    sf_close(file);
+    throw InputError(where, "declares " + std::to_string(info.frames) + " frames of " + std::to_string(info.channels) +
+                                " channel(s), more than the " + std::to_string(kMaxAudioSamples) +
+                                " samples an audio file may have");
+  }
   Audio audio;
   audio.sample_rate_hz = info.samplerate;
   audio.channels = info.channels;
-  audio.samples.resize(std::size_t(info.frames) * std::size_t(info.channels));
-  const sf_count_t got = sf_readf_float(file, audio.samples.data(), info.frames);
+  // In blocks, so that memory follows the samples there are rather than the count a header claims.
+  constexpr sf_count_t kBlockFrames = 1 << 16;
+  sf_count_t got = 0;
+  while (got < info.frames) {
+    const sf_count_t want = std::min(kBlockFrames, info.frames - got);
+    audio.samples.resize(std::size_t(got + want) * std::size_t(info.channels));
+    const sf_count_t n = sf_readf_float(file, audio.samples.data() + std::size_t(got) * std::size_t(info.channels), want);
+    got += std::max<sf_count_t>(n, 0);
+    if (n < want) break;
+  }
+  audio.samples.resize(std::size_t(got) * std::size_t(info.channels));
   sf_close(file);
-  if (got != info.frames) throw InputError(where, "audio file is truncated");
+  if (got != info.frames)
+    throw InputError(where, "truncated: " + std::to_string(got) + " of the " + std::to_string(info.frames) +
+                                " frames its header declares could be read");
   for (float v : audio.samples)
     if (!std::isfinite(v)) throw InputError(where, "audio contains NaN or infinite samples");
   return audio;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <stdexcept>
 #include <random>
 
 namespace ms {
@@ -18,14 +20,32 @@ void apply_support_damping(ModalModel& model, const SupportDamping& support) {
   }
 }
 
+namespace {
+
+bool splits(const Doublets& doublets, const std::vector<int>& orders, std::size_t n) {
+  return orders.empty() || (n < orders.size() && orders[n] >= doublets.min_order);
+}
+
+}  // namespace
+
+double lowest_split_freq_hz(const ModalModel& model, const Doublets& doublets, const std::vector<int>& orders) {
+  double lowest = std::numeric_limits<double>::infinity();
+  for (std::size_t n = 0; n < model.modes.size(); ++n)
+    if (splits(doublets, orders, n)) lowest = std::min(lowest, model.modes[n].freq_hz);
+  return lowest;
+}
+
 void apply_doublets(ModalModel& model, const Doublets& doublets, const std::vector<int>& orders) {
   if (doublets.split_rel <= 0 && doublets.split_hz <= 0) return;
+  if (doublets.split_hz > 0 ? doublets.split_hz >= 2.0 * lowest_split_freq_hz(model, doublets, orders)
+                            : doublets.split_rel >= 2.0)
+    throw std::invalid_argument("apply_doublets: the split would put a mode at or below 0 Hz");
   ModalModel out;
   out.hit_point_names = model.hit_point_names;
   out.hit_gains.resize(model.hit_gains.size());
   for (std::size_t n = 0; n < model.modes.size(); ++n) {
     const Mode& m = model.modes[n];
-    const bool split = orders.empty() || (n < orders.size() && orders[n] >= doublets.min_order);
+    const bool split = splits(doublets, orders, n);
     auto copy_gain = [&](std::size_t times) {
       for (std::size_t h = 0; h < model.hit_gains.size(); ++h)
         for (std::size_t k = 0; k < times; ++k)

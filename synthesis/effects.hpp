@@ -34,8 +34,12 @@ struct Doublets {
 };
 
 // Replaces each mode selected by `orders` (circumferential order >= min_order; all modes when
-// orders is empty) by two modes, amplitudes (1 - balance) a and balance a.
+// orders is empty) by two modes, amplitudes (1 - balance) a and balance a. Throws
+// std::invalid_argument when a split would put a mode at or below 0 Hz.
 void apply_doublets(ModalModel& model, const Doublets& doublets, const std::vector<int>& orders);
+
+// The lowest frequency among the modes apply_doublets would split (infinity when none).
+double lowest_split_freq_hz(const ModalModel& model, const Doublets& doublets, const std::vector<int>& orders);
 
 struct BackgroundNoise {
   double snr_db = 0.0;     // signal power over the whole duration / noise power

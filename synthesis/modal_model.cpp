@@ -22,7 +22,7 @@ std::size_t drop_modes_at_or_above(ModalModel& model, double limit_hz) {
   const std::size_t before = model.modes.size();
   std::vector<std::size_t> keep;
   for (std::size_t n = 0; n < before; ++n)
-    if (model.modes[n].freq_hz < limit_hz) keep.push_back(n);
+    if (model.modes[n].freq_hz > 0.0 && model.modes[n].freq_hz < limit_hz) keep.push_back(n);
   if (keep.size() == before) return 0;
   ModalModel out;
   for (std::size_t n : keep) out.modes.push_back(model.modes[n]);

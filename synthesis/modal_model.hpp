@@ -23,7 +23,8 @@ struct ModalModel {
 // The model as heard when struck at hit point `index` (amp_n *= hit_gains[index][n]).
 ModalModel at_hit_point(const ModalModel& model, std::size_t index);
 
-// Drop modes at or above the Nyquist frequency; returns how many were dropped.
+// Drop modes at or above limit_hz (Nyquist), and any at or below 0 Hz, which cannot sound; returns how
+// many were dropped.
 std::size_t drop_modes_at_or_above(ModalModel& model, double limit_hz);
 
 }  // namespace ms

@@ -4,9 +4,8 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
+#include "synthesis/bounded_file.hpp"
 #include "synthesis/damping_law.hpp"
 #include "synthesis/masking_pruning.hpp"
 #include "synthesis/material.hpp"
@@ -173,7 +172,8 @@ std::vector<Mode> read_inline_modes(const YamlReader& r, const YAML::Node& node)
 }  // namespace
 
 ParamSet parse_paramset(const std::string& yaml_text, const std::string& file,
-                        const std::string& base_dir, const std::vector<std::string>& overrides) {
+                        const std::string& base_dir, const std::vector<std::string>& overrides,
+                        const Confinement* confinement) {
   YamlReader probe(file);
   YAML::Node root = probe.load(yaml_text);
   if (!root.IsDefined() || root.IsNull()) throw InputError(SourceLocation{file, 1, 1}, "empty parameter set");
@@ -186,6 +186,7 @@ ParamSet parse_paramset(const std::string& yaml_text, const std::string& file,
                           "excitation", "effects", "prune", "level", "output"});
   ParamSet p;
   p.source = file;
+  p.format_where = SourceLocation{file, 0, 0};
   if (root["description"]) p.description = r.text(root["description"], "description");
   if (root["sample_rate"]) {
     p.sample_rate_hz = r.positive(root["sample_rate"], "sample_rate");
@@ -218,10 +219,15 @@ ParamSet parse_paramset(const std::string& yaml_text, const std::string& file,
     if (modes.IsSequence()) {
       p.model.modes = read_inline_modes(r, modes);
     } else if (modes.IsScalar()) {
-      fs::path csv(r.text(modes, "modes"));
+      const std::string written = r.text(modes, "modes");
+      const Confinement own = confinement ? Confinement::anywhere() : paramset_confinement(base_dir);
+      const Confinement& allowed = confinement ? *confinement : own;
+      if (const std::string problem = allowed.problem(written, base_dir); !problem.empty())
+        r.fail(modes, "modes", problem);
+      fs::path csv(written);
       if (csv.is_relative()) csv = fs::path(base_dir) / csv;
       try {
-        p.model = read_modes_csv(csv.string());
+        p.model = parse_modes_csv(read_bounded_file(csv.string(), kCsvFileLimit), csv.string());
       } catch (const InputError& e) {
         if (e.where().line > 0) throw;
         r.fail(modes, "modes", "cannot use '" + csv.string() + "': " + e.problem());
@@ -427,7 +433,14 @@ ParamSet parse_paramset(const std::string& yaml_text, const std::string& file,
       const YAML::Node d = fx["doublets"];
       r.check_keys(d, "effects.doublets", {"split_rel", "split_hz", "balance", "min_order"});
       Doublets db;
-      if (d["split_rel"]) db.split_rel = r.positive(d["split_rel"], "effects.doublets.split_rel");
+      // A doublet is one mode split a little by imperfection, into f -+ split/2: a split of f or more
+      // would put the lower mode at or below f/2 (and at 2 f below 0 Hz).
+      if (d["split_rel"]) {
+        db.split_rel = r.positive(d["split_rel"], "effects.doublets.split_rel");
+        if (db.split_rel >= 1.0)
+          r.fail(d["split_rel"], "effects.doublets.split_rel",
+                 "must lie in (0, 1): the two modes lie at f (1 -+ split_rel/2), got " + d["split_rel"].Scalar());
+      }
       if (d["split_hz"]) db.split_hz = r.positive(d["split_hz"], "effects.doublets.split_hz");
       if (db.split_rel <= 0 && db.split_hz <= 0) r.fail(d, "effects.doublets", "needs split_rel or split_hz");
       if (d["balance"]) {
@@ -435,6 +448,13 @@ ParamSet parse_paramset(const std::string& yaml_text, const std::string& file,
         if (!(db.balance >= 0 && db.balance <= 1)) r.fail(d["balance"], "effects.doublets.balance", "must lie in [0, 1]");
       }
       if (d["min_order"]) db.min_order = int(r.integer(d["min_order"], "effects.doublets.min_order"));
+      if (db.split_hz > 0) {
+        const double lowest = lowest_split_freq_hz(p.model, db, orders);
+        if (db.split_hz >= lowest)
+          r.fail(d["split_hz"], "effects.doublets.split_hz",
+                 "must be less than the frequency of every mode it splits (the lowest is " + std::to_string(lowest) +
+                     " Hz), got " + d["split_hz"].Scalar());
+      }
       apply_doublets(p.model, db, orders);
     }
   }
@@ -506,6 +526,7 @@ ParamSet parse_paramset(const std::string& yaml_text, const std::string& file,
     if (o["format"]) {
       try {
         p.format = parse_sample_format(r.text(o["format"], "output.format"));
+        p.format_where = r.where(o["format"], "output.format");
       } catch (const std::invalid_argument& err) {
         r.fail(o["format"], "output.format", err.what());
       }
@@ -516,16 +537,11 @@ ParamSet parse_paramset(const std::string& yaml_text, const std::string& file,
   return p;
 }
 
-ParamSet load_paramset(const std::string& path, const std::vector<std::string>& overrides) {
-  const SourceLocation where{path, 0, 0};
-  if (!fs::exists(path)) throw InputError(where, "no such file");
-  if (fs::is_directory(path)) throw InputError(where, "is a folder, not a parameter set");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(where, "cannot read file (permission denied?)");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
+ParamSet load_paramset(const std::string& path, const std::vector<std::string>& overrides,
+                       const Confinement* confinement) {
+  const std::string text = read_bounded_file(path, kYamlFileLimit);
   const fs::path base = fs::path(path).has_parent_path() ? fs::path(path).parent_path() : fs::path(".");
-  return parse_paramset(buffer.str(), path, base.string(), overrides);
+  return parse_paramset(text, path, base.string(), overrides, confinement);
 }
 
 std::string canonical_recipe(const ParamSet& p) {

@@ -10,6 +10,7 @@
 #include "synthesis/excitation.hpp"
 #include "synthesis/modal_model.hpp"
 #include "synthesis/output_level.hpp"
+#include "synthesis/path_confinement.hpp"
 
 namespace ms {
 
@@ -24,6 +25,7 @@ struct ParamSet {
   AttackTransient transient;     // likewise
   BackgroundNoise noise;         // added after rendering, before the output level
   SampleFormat format = SampleFormat::float32;
+  SourceLocation format_where;   // where output.format was written (the file alone when it was not)
   std::string description;       // free text
   std::vector<std::string> warnings;  // e.g. overdamped modes dropped
   std::size_t modes_before_pruning = 0;  // 0 when the set has no `prune`
@@ -31,10 +33,13 @@ struct ParamSet {
 };
 
 // Reads and resolves a parameter set; `overrides` are "key.path=value" (like --set).
-// Throws InputError with file:line:column for every problem a person can make.
-ParamSet load_paramset(const std::string& path, const std::vector<std::string>& overrides = {});
+// Throws InputError with file:line:column for every problem a person can make. Files the set names
+// (a modes CSV) must lie inside `confinement`; without one, inside paramset_confinement(its folder).
+ParamSet load_paramset(const std::string& path, const std::vector<std::string>& overrides = {},
+                       const Confinement* confinement = nullptr);
 ParamSet parse_paramset(const std::string& yaml_text, const std::string& file_for_errors,
-                        const std::string& base_dir, const std::vector<std::string>& overrides = {});
+                        const std::string& base_dir, const std::vector<std::string>& overrides = {},
+                        const Confinement* confinement = nullptr);
 
 // The canonical text the recipe hash is taken over (resolved values, 17 digits).
 std::string canonical_recipe(const ParamSet& p);

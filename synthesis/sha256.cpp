@@ -2,11 +2,14 @@
 
 #include <openssl/evp.h>
 
-#include <fstream>
+#include <unistd.h>
+
+#include <cerrno>
 #include <memory>
 #include <stdexcept>
 #include <vector>
 
+#include "synthesis/bounded_file.hpp"
 #include "synthesis/input_error.hpp"
 
 namespace ms {
@@ -46,14 +49,20 @@ std::string sha256_hex(const std::string& bytes) {
 }
 
 std::string sha256_file_hex(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(SourceLocation{path, 0, 0}, "cannot read file");
+  const int fd = open_bounded_file(path, kAudioFileLimit);
   Digest d;
   std::vector<char> buf(1 << 16);
-  while (in) {
-    in.read(buf.data(), std::streamsize(buf.size()));
-    d.update(buf.data(), std::size_t(in.gcount()));
+  for (;;) {
+    const ssize_t got = ::read(fd, buf.data(), buf.size());
+    if (got < 0 && errno == EINTR) continue;
+    if (got < 0) {
+      ::close(fd);
+      throw InputError(SourceLocation{path, 0, 0}, "read error");
+    }
+    if (got == 0) break;
+    d.update(buf.data(), std::size_t(got));
   }
+  ::close(fd);
   return d.hex();
 }
 

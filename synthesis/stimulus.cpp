@@ -1,6 +1,10 @@
 #include "synthesis/stimulus.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+
+#include "synthesis/input_error.hpp"
 
 #include "synthesis/resonator_bank.hpp"
 
@@ -30,6 +34,22 @@ RenderedStimulus render_stimulus(const ParamSet& p) {
   if (out.level_gain != 1.0)
     for (float& v : out.audio.samples) v = float(v * out.level_gain);
   return out;
+}
+
+void check_writable(const ParamSet& p, const Audio& audio, const SourceLocation& format_where) {
+  float peak = 0.0f;
+  for (float v : audio.samples) {
+    if (!std::isfinite(v))
+      throw InputError(SourceLocation{p.source, 0, 0},
+                       "the rendered sound has NaN or infinite samples (an amplitude, gain or level far too large?)");
+    peak = std::max(peak, std::abs(v));
+  }
+  if (p.format != SampleFormat::float32 && peak > 1.0f) {
+    char db[32];
+    std::snprintf(db, sizeof db, "%+.1f", 20.0 * std::log10(double(peak)));
+    throw InputError(format_where, "output.format: " + to_string(p.format) + " cannot hold the rendered peak of " +
+                                       db + " dBFS (use float32, or a level that normalizes to at most 0 dBFS)");
+  }
 }
 
 }  // namespace ms

@@ -21,4 +21,9 @@ ModalModel audible_model(const ParamSet& p, std::vector<std::string>& warnings);
 
 RenderedStimulus render_stimulus(const ParamSet& p);
 
+// Throws InputError at the recipe's key when the rendered sound cannot be written in its format: a
+// PCM format and a peak above full scale (at output.format, or `format_where` when the format came
+// from elsewhere, e.g. --format), or samples that are not finite (at the set's file).
+void check_writable(const ParamSet& p, const Audio& audio, const SourceLocation& format_where);
+
 }  // namespace ms

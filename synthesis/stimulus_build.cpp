@@ -150,6 +150,7 @@ BuildReport build_stimuli(const std::vector<std::string>& inputs, const std::str
       const RenderedStimulus r = render_stimulus(sets[i]);
       const fs::path out = fs::path(out_dir) / e.name;
       fs::create_directories(out.parent_path());
+      check_writable(sets[i], r.audio, sets[i].format_where);
       write_wav(out.string(), r.audio, sets[i].format);
       e.sha256 = sha256_file_hex(out.string());
       e.frames = r.audio.frames();

@@ -1,27 +1,92 @@
 #include "synthesis/yaml_reader.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
+#include <map>
+#include <utility>
 
 namespace ms {
 
+namespace {
+
+// Nodes a document may expand to through aliases: a reader walking the tree must not do 2^n work
+// for n nested aliases ("billion laughs").
+constexpr std::uint64_t kMaxExpandedNodes = 4000000;  // 200000 inline modes take 1.8 million
+
+struct TreeCheck {
+  const YamlReader& reader;
+  // Collections already visited, by start offset (several can share one: "{a: 1}: 2"), each with the
+  // nodes below it; 0 while it is being visited.
+  std::map<std::size_t, std::vector<std::pair<YAML::Node, std::uint64_t>>> visited;
+
+  std::uint64_t* find(const YAML::Node& n) {
+    for (auto& [node, count] : visited[std::size_t(n.Mark().pos)])
+      if (node.is(n)) return &count;
+    return nullptr;
+  }
+
+  // Nodes below `n` with aliases expanded; each collection is walked once (an alias shares its
+  // anchor's node).
+  std::uint64_t visit(const YAML::Node& n) {
+    if (!n.IsMap() && !n.IsSequence()) return 1;
+    if (const std::uint64_t* known = find(n)) {
+      if (*known == 0) throw InputError(reader.where(n, ""), "an alias refers to a collection that contains it");
+      return *known;
+    }
+    auto& bucket = visited[std::size_t(n.Mark().pos)];
+    bucket.emplace_back(n, 0);
+    const std::size_t slot = bucket.size() - 1;
+    std::uint64_t total = 1;
+    if (n.IsMap()) {
+      std::map<std::string, YAML::Mark> seen;
+      for (auto it = n.begin(); it != n.end() && total <= kMaxExpandedNodes; ++it) {
+        if (it->first.IsScalar()) {
+          const auto [first, fresh] = seen.emplace(it->first.Scalar(), it->first.Mark());
+          if (!fresh)
+            throw InputError(reader.where(it->first, ""),
+                             "duplicate key '" + it->first.Scalar() + "' (first at line " +
+                                 std::to_string(first->second.line + 1) + ", column " +
+                                 std::to_string(first->second.column + 1) + ")");
+        }
+        total += visit(it->first) + visit(it->second);
+      }
+    } else {
+      for (auto it = n.begin(); it != n.end() && total <= kMaxExpandedNodes; ++it) total += visit(*it);
+    }
+    if (total > kMaxExpandedNodes)
+      throw InputError(reader.where(n, ""), "the document expands to more than " +
+                                                std::to_string(kMaxExpandedNodes) + " values through aliases");
+    visited[std::size_t(n.Mark().pos)][slot].second = total;
+    return total;
+  }
+};
+
+}  // namespace
+
 YAML::Node YamlReader::load(const std::string& text) const {
+  YAML::Node root;
   try {
-    return YAML::Load(text);
+    root = YAML::Load(text);
   } catch (const YAML::ParserException& e) {
     throw InputError(SourceLocation{file_, e.mark.line + 1, e.mark.column + 1},
                      "YAML syntax error: " + e.msg);
   }
+  TreeCheck{*this, {}}.visit(root);
+  return root;
 }
 
 SourceLocation YamlReader::where(const YAML::Node& node, const std::string& key_path) const {
+  const bool in_file = node.IsDefined() && !node.Mark().is_null();
   for (const auto& o : overridden_)
-    if (key_path == o || key_path.rfind(o + ".", 0) == 0 || key_path.rfind(o + "[", 0) == 0)
+    if (key_path == o || key_path.rfind(o + ".", 0) == 0 || key_path.rfind(o + "[", 0) == 0 ||
+        (!in_file && !key_path.empty() && o.rfind(key_path + ".", 0) == 0))  // a map an override made
       return SourceLocation{"--set " + o, 0, 0};
-  if (node.IsDefined() && !node.Mark().is_null())
-    return SourceLocation{file_, node.Mark().line + 1, node.Mark().column + 1};
-  return SourceLocation{file_, 0, 0};
+  if (in_file) return SourceLocation{file_, node.Mark().line + 1, node.Mark().column + 1};
+  // The document itself (an empty file): its first line.
+  return SourceLocation{file_, key_path.empty() ? 1 : 0, key_path.empty() ? 1 : 0};
 }
 
 void YamlReader::fail(const YAML::Node& node, const std::string& key_path,
@@ -90,6 +155,20 @@ long long YamlReader::integer(const YAML::Node& node, const std::string& key_pat
 std::string YamlReader::text(const YAML::Node& node, const std::string& key_path) const {
   if (!node.IsScalar()) fail(node, key_path, "expected text");
   return node.Scalar();
+}
+
+bool is_identifier(const std::string& t) {
+  if (t.empty() || t.size() > 64 || !std::isalnum(static_cast<unsigned char>(t[0]))) return false;
+  return std::all_of(t.begin(), t.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.';
+  });
+}
+
+std::string YamlReader::identifier(const YAML::Node& node, const std::string& key_path) const {
+  const std::string t = text(node, key_path);
+  if (!is_identifier(t))
+    fail(node, key_path, "'" + t + "' is not an id: use 1-64 letters, digits, '-', '_' or '.', starting with a letter or digit");
+  return t;
 }
 
 std::vector<double> YamlReader::numbers(const YAML::Node& node, const std::string& key_path) const {

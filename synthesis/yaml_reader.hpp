@@ -18,7 +18,8 @@ class YamlReader {
   YamlReader(std::string file, std::vector<std::string> overridden = {})
       : file_(std::move(file)), overridden_(std::move(overridden)) {}
 
-  // Parses text; YAML syntax errors become InputError with the parser's line and column.
+  // Parses text; YAML syntax errors become InputError with the parser's line and column, and so do a
+  // key written twice in one map (both places named) and aliases expanding past 4 million values.
   YAML::Node load(const std::string& text) const;
 
   SourceLocation where(const YAML::Node& node, const std::string& key_path) const;
@@ -34,6 +35,8 @@ class YamlReader {
   double non_negative(const YAML::Node& node, const std::string& key_path) const; // >= 0
   long long integer(const YAML::Node& node, const std::string& key_path) const;
   std::string text(const YAML::Node& node, const std::string& key_path) const;
+  // Text that names something in file names and databases (is_identifier).
+  std::string identifier(const YAML::Node& node, const std::string& key_path) const;
   std::vector<double> numbers(const YAML::Node& node, const std::string& key_path) const;
 
   const std::string& file() const { return file_; }
@@ -45,6 +48,10 @@ class YamlReader {
 
 // Apply "a.b.c=value" overrides to a document (value parsed as YAML). Returns the dotted keys.
 std::vector<std::string> apply_overrides(YAML::Node& root, const std::vector<std::string>& sets);
+
+// 1-64 letters, digits, '-', '_' and '.', starting with a letter or digit: safe as a file name part
+// (no folder separators, no "..").
+bool is_identifier(const std::string& text);
 
 // Levenshtein-nearest candidate, or "" when nothing is close.
 std::string nearest_key(const std::string& key, const std::vector<std::string>& candidates);
