@@ -10,6 +10,7 @@
 #include "studyapp/core/simulated_listener.hpp"
 #include "studyapp/core/stimulus_cache.hpp"
 #include "synthesis/input_error.hpp"
+#include "synthesis/yaml_reader.hpp"
 
 namespace ms {
 
@@ -23,6 +24,9 @@ InvalidProtocol::InvalidProtocol(std::vector<std::string> problems)
       problems_(std::move(problems)) {}
 
 std::string default_db_path(const std::string& protocol_path, const std::string& study) {
+  // The id becomes a file name: "../../x" must not leave results/.
+  if (!is_identifier(study))
+    throw InputError(SourceLocation{protocol_path, 0, 0}, "study id '" + study + "' cannot name a database file");
   return (fs::path(protocol_path).parent_path() / "results" / (study + ".sqlite")).lexically_normal().string();
 }
 

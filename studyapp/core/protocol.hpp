@@ -29,6 +29,7 @@ struct StimulusSource {
   std::string path;                   // paramset or file path as written (relative to the protocol)
   SourceLocation path_where;
   std::vector<std::string> overrides; // "key=value" from `set:` and `prune:` (prune.key=value)
+  std::vector<SourceLocation> override_where;  // where each of `overrides` was written
   StimulusRef derive_from;            // kind == derived
   double lowpass_hz = 0.0;
   bool implicit = false;              // created by `anchors: auto`, not written by the author
@@ -149,6 +150,10 @@ struct Protocol {
   bool export_personal = false;         // may participant codes leave the database on export?
   std::vector<StimulusSource> stimuli;  // in file order, implicit anchors appended
   std::vector<Block> blocks;
+  // Written but not parsed (each reported by the parser already), so the validator says nothing
+  // more about them: the names under stimuli: and the count of entries under blocks:.
+  std::vector<std::string> unparsed_stimuli;
+  std::size_t unparsed_blocks = 0;
 
   const StimulusSource* find_stimulus(const std::string& name) const;
 };

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "synthesis/bounded_file.hpp"
 #include "synthesis/yaml_reader.hpp"
 
 namespace ms {
@@ -63,16 +64,17 @@ std::vector<std::string> texts(const YamlReader& r, const YAML::Node& n, const s
 
 // Flattens a YAML map into "a.b=value" overrides (values re-emitted as flow YAML).
 void flatten(const YamlReader& r, const YAML::Node& n, const std::string& prefix, const std::string& path,
-             std::vector<std::string>& out) {
+             std::vector<std::string>& out, std::vector<SourceLocation>& out_where) {
   if (!n.IsMap()) r.fail(n, path, "expected a map of parameter-set keys");
   for (auto it = n.begin(); it != n.end(); ++it) {
     const std::string key = prefix.empty() ? it->first.Scalar() : prefix + "." + it->first.Scalar();
     if (it->second.IsMap()) {
-      flatten(r, it->second, key, path + "." + it->first.Scalar(), out);
+      flatten(r, it->second, key, path + "." + it->first.Scalar(), out, out_where);
     } else {
       YAML::Emitter e;
       e << YAML::Flow << it->second;
       out.push_back(key + "=" + e.c_str());
+      out_where.push_back(r.where(it->second, path + "." + it->first.Scalar()));
     }
   }
 }
@@ -103,8 +105,8 @@ StimulusSource parse_stimulus(const YamlReader& r, const YAML::Node& key, const 
     s.kind = StimulusKind::paramset;
     s.path = r.text(n["paramset"], path + ".paramset");
     s.path_where = r.where(n["paramset"], path + ".paramset");
-    if (n["set"]) flatten(r, n["set"], "", path + ".set", s.overrides);
-    if (n["prune"]) flatten(r, n["prune"], "prune", path + ".prune", s.overrides);
+    if (n["set"]) flatten(r, n["set"], "", path + ".set", s.overrides, s.override_where);
+    if (n["prune"]) flatten(r, n["prune"], "prune", path + ".prune", s.overrides, s.override_where);
   } else if (n["derive"]) {
     r.check_keys(n, path, {"derive", "lowpass_hz", "truth", "factors"});
     s.kind = StimulusKind::derived;
@@ -329,7 +331,7 @@ Protocol parse_protocol(const std::string& yaml_text, const std::string& file_fo
   r.check_keys(root, "", {"study", "title", "sample_rate", "seed", "counterbalance", "allow_outside",
                           "export_personal", "stimuli", "blocks"});
   if (!root["study"]) r.fail(root, "", "missing 'study' (the study id)");
-  pr.study = r.text(root["study"], "study");
+  pr.study = r.identifier(root["study"], "study");
   if (root["title"]) pr.title = r.text(root["title"], "title");
   if (root["sample_rate"]) pr.sample_rate_hz = r.positive(root["sample_rate"], "sample_rate");
   if (root["seed"]) {
@@ -356,12 +358,18 @@ Protocol parse_protocol(const std::string& yaml_text, const std::string& file_fo
   };
   const YAML::Node st = root["stimuli"];
   if (st && !st.IsMap()) r.fail(st, "stimuli", "expected a map name -> source");
-  for (auto it = st.begin(); st && it != st.end(); ++it)
+  for (auto it = st.begin(); st && it != st.end(); ++it) {
+    const std::size_t before = problems ? problems->size() : 0;
     guarded([&] { pr.stimuli.push_back(parse_stimulus(r, it->first, it->second)); });
+    if (problems && problems->size() > before) pr.unparsed_stimuli.push_back(it->first.Scalar());
+  }
   const YAML::Node bl = root["blocks"];
   if (bl && !bl.IsSequence()) r.fail(bl, "blocks", "expected a list of blocks");
-  for (std::size_t i = 0; bl && i < bl.size(); ++i)
+  for (std::size_t i = 0; bl && i < bl.size(); ++i) {
+    const std::size_t before = problems ? problems->size() : 0;
     guarded([&] { pr.blocks.push_back(parse_block(r, bl[i], i)); });
+    if (problems && problems->size() > before) ++pr.unparsed_blocks;
+  }
 
   // `anchors: auto`: the BS.1534 3.5 kHz and 7 kHz low-passed references, as implicit stimuli.
   for (auto& b : pr.blocks) {
@@ -385,13 +393,10 @@ Protocol parse_protocol(const std::string& yaml_text, const std::string& file_fo
 }
 
 Protocol load_protocol(const std::string& path, std::vector<std::string>* problems) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(SourceLocation{path, 0, 0}, "cannot open protocol file");
-  std::stringstream ss;
-  ss << in.rdbuf();
+  const std::string text = read_bounded_file(path, kYamlFileLimit);
   std::string base = std::filesystem::path(path).parent_path().string();
   if (base.empty()) base = ".";
-  return parse_protocol(ss.str(), path, base, problems);
+  return parse_protocol(text, path, base, problems);
 }
 
 }  // namespace ms

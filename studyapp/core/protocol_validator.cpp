@@ -1,12 +1,16 @@
 // Protocol validation (see protocol_validator.hpp): collects every problem instead of stopping.
 #include "studyapp/core/protocol_validator.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <map>
 #include <set>
 
 #include "studyapp/core/protocol_parser.hpp"
+#include "studyapp/core/stimulus_checks.hpp"
+#include "synthesis/bounded_file.hpp"
 #include "synthesis/paramset.hpp"
 #include "synthesis/yaml_reader.hpp"
 
@@ -26,20 +30,11 @@ std::string suggest(const std::string& name, const std::vector<std::string>& can
   return near.empty() ? "" : " (did you mean '" + near + "'?)";
 }
 
-// True when `p` lies inside `root` (both canonical): compares whole path components.
-bool inside(const fs::path& p, const fs::path& root) {
-  auto pi = p.begin();
-  for (auto ri = root.begin(); ri != root.end(); ++ri, ++pi) {
-    if (ri->empty()) continue;  // trailing separator
-    if (pi == p.end() || *pi != *ri) return false;
-  }
-  return true;
-}
-
-fs::path canonical_or_self(const fs::path& p) {
-  std::error_code ec;
-  auto c = fs::weakly_canonical(p, ec);
-  return ec ? p.lexically_normal() : c;
+// Where the protocol wrote the override `key` of stimulus `s` (its name when not found).
+SourceLocation override_location(const StimulusSource& s, const std::string& key) {
+  for (std::size_t i = 0; i < s.overrides.size() && i < s.override_where.size(); ++i)
+    if (s.overrides[i].rfind(key + "=", 0) == 0) return s.override_where[i];
+  return s.where;
 }
 
 }  // namespace
@@ -51,20 +46,12 @@ std::vector<std::string> validate_protocol(const Protocol& p, const ValidateOpti
   std::vector<std::string> names;
   for (const auto& s : p.stimuli) names.push_back(s.name);
   auto check_ref = [&](const StimulusRef& r, const std::string& what) {
-    if (!p.find_stimulus(r.name))
+    const auto& unparsed = p.unparsed_stimuli;  // reported by the parser already
+    if (!p.find_stimulus(r.name) && std::find(unparsed.begin(), unparsed.end(), r.name) == unparsed.end())
       problems.push_back(at(r.where, what + "unknown stimulus '" + r.name + "'" + suggest(r.name, names)));
   };
 
-  // Folders a stimulus file may live in: the protocol's own and the project's stimuli/.
-  const fs::path base = canonical_or_self(fs::absolute(p.base_dir.empty() ? "." : p.base_dir));
-  std::vector<fs::path> roots{base};
-  if (!options.stimuli_dir.empty()) {
-    roots.push_back(canonical_or_self(fs::absolute(options.stimuli_dir)));
-  } else {
-    for (const fs::path& cand : {base / "stimuli", base.parent_path() / "stimuli"})
-      if (fs::is_directory(cand)) roots.push_back(canonical_or_self(cand));
-  }
-  const bool allow_outside = options.allow_outside || p.allow_outside;
+  const Confinement confinement = protocol_confinement(p, options);
   std::map<std::string, fs::path> loaded;  // parameter-set stimuli that load cleanly
 
   // Sliders and staircases set a parameter-set key live: it must load at the values they reach.
@@ -75,7 +62,7 @@ std::vector<std::string> validate_protocol(const Protocol& p, const ValidateOpti
     auto overrides = p.find_stimulus(stim.name)->overrides;
     overrides.push_back(key + "=" + std::to_string(value));
     try {
-      (void)load_paramset(it->second.string(), overrides);
+      (void)load_paramset(it->second.string(), overrides, &confinement);
     } catch (const InputError& e) {
       problems.push_back(at(where, who + "'" + key + "' = " + std::to_string(value) + " on stimulus '" +
                                        stim.name + "': " + e.problem()));
@@ -100,30 +87,34 @@ std::vector<std::string> validate_protocol(const Protocol& p, const ValidateOpti
       }
       continue;
     }
-    const fs::path resolved = canonical_or_self(base / s.path);
-    const bool ok_place = allow_outside || std::any_of(roots.begin(), roots.end(),
-                                                       [&](const fs::path& r) { return inside(resolved, r); });
-    if (!ok_place) {
-      problems.push_back(at(s.path_where, "stimulus '" + s.name + "': path '" + s.path +
-                                              "' is outside the protocol's folder and the project's stimuli/ "
-                                              "folder (use --allow-outside or allow_outside: true)"));
+    if (const std::string outside = confinement.problem(s.path, p.base_dir); !outside.empty()) {
+      problems.push_back(at(s.path_where, "stimulus '" + s.name + "': " + outside));
       continue;
     }
-    if (!fs::is_regular_file(resolved)) {
+    const fs::path resolved = confinement.resolve(s.path, p.base_dir);
+    if (!fs::exists(resolved)) {
       problems.push_back(at(s.path_where, "stimulus '" + s.name + "': file '" + s.path + "' does not exist"));
       continue;
     }
-    if (s.kind == StimulusKind::paramset && options.load_paramsets) {
-      try {
-        (void)load_paramset(resolved.string(), s.overrides);
+    // The checks the stimulus cache makes when a session starts, so that check and start agree.
+    try {
+      if (s.kind == StimulusKind::paramset && options.load_paramsets) {
+        const ParamSet set = load_paramset(resolved.string(), s.overrides, &confinement);
+        check_paramset_stimulus(p, s, set);
         loaded[s.name] = resolved;
-      } catch (const InputError& e) {
-        // Problems in overrides point at the stimulus in the protocol; others at the set's own file.
-        if (e.where().file.rfind("--set ", 0) == 0)
-          problems.push_back(at(s.where, "stimulus '" + s.name + "': " + e.where().file.substr(6) + ": " + e.problem()));
-        else
-          problems.push_back(e.what());
+      } else if (s.kind == StimulusKind::file && options.load_paramsets) {
+        (void)read_recording_stimulus(p, s, confinement);
+      } else {
+        ::close(open_bounded_file(resolved.string(), s.kind == StimulusKind::file ? kAudioFileLimit : kYamlFileLimit));
       }
+    } catch (const InputError& e) {
+      // Problems in overrides point at the stimulus in the protocol; others at the set's own file.
+      if (e.where().file.rfind("--set ", 0) == 0)
+        problems.push_back(at(override_location(s, e.where().file.substr(6)), "stimulus '" + s.name + "': " + e.problem()));
+      else if (e.where().line == 0)
+        problems.push_back(at(s.path_where, "stimulus '" + s.name + "': '" + s.path + "': " + e.problem()));
+      else
+        problems.push_back(e.what());
     }
   }
 
@@ -177,8 +168,23 @@ std::vector<std::string> validate_protocol(const Protocol& p, const ValidateOpti
     }
     if (const auto* q = std::get_if<QuestionnaireBlock>(&b.body); q && q->questions.empty()) empty("no questions");
   }
-  if (p.blocks.empty()) problems.push_back(at(top, "the protocol has no blocks"));
+  if (p.blocks.empty() && p.unparsed_blocks == 0) problems.push_back(at(top, "the protocol has no blocks"));
   return problems;
+}
+
+Confinement protocol_confinement(const Protocol& p, const ValidateOptions& options) {
+  if (options.allow_outside || p.allow_outside) return Confinement::anywhere();
+  // The protocol's own folder and the project's stimuli/ folder.
+  const fs::path base = canonical_or_self(p.base_dir.empty() ? "." : p.base_dir);
+  std::vector<fs::path> roots{base};
+  if (!options.stimuli_dir.empty()) {
+    roots.push_back(options.stimuli_dir);
+  } else {
+    for (const fs::path& cand : {base / "stimuli", base.parent_path() / "stimuli"})
+      if (fs::is_directory(cand)) roots.push_back(cand);
+  }
+  return Confinement::within(roots, "the protocol's folder and the project's stimuli/ folder",
+                             "use --allow-outside or allow_outside: true");
 }
 
 ProtocolCheck check_protocol_file(const std::string& path, const ValidateOptions& options) {
@@ -189,6 +195,8 @@ ProtocolCheck check_protocol_file(const std::string& path, const ValidateOptions
     c.problems.push_back(e.what());
     return c;
   }
+  // The protocol as checked carries the permission it was checked with, for the stimulus cache.
+  if (options.allow_outside) c.protocol->allow_outside = true;
   const auto more = validate_protocol(*c.protocol, options);
   c.problems.insert(c.problems.end(), more.begin(), more.end());
   return c;

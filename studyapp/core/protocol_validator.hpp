@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "studyapp/core/protocol.hpp"
+#include "synthesis/path_confinement.hpp"
 
 namespace ms {
 
@@ -18,8 +19,14 @@ struct ValidateOptions {
 
 std::vector<std::string> validate_protocol(const Protocol& p, const ValidateOptions& options = {});
 
+// The folders every file the protocol reaches must lie in (its stimuli, their parameter sets' modes
+// CSVs): its own folder and the project's stimuli/, or anywhere with allow_outside.
+Confinement protocol_confinement(const Protocol& p, const ValidateOptions& options = {});
+
 // Parse (collecting per-item problems) and validate a protocol file. `protocol` is empty only when
 // the file could not be read or parsed at all (the reason is then the only problem).
+// With options.allow_outside, the returned protocol's allow_outside is set too (the stimulus cache
+// then reads what was checked).
 struct ProtocolCheck {
   std::optional<Protocol> protocol;
   std::vector<std::string> problems;

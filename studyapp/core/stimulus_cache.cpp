@@ -6,7 +6,9 @@
 #include <set>
 
 #include "studyapp/core/anchor_lowpass.hpp"
+#include "studyapp/core/protocol_validator.hpp"
 #include "synthesis/audio_file.hpp"
+#include "synthesis/bounded_file.hpp"
 #include "synthesis/input_error.hpp"
 #include "synthesis/paramset.hpp"
 #include "synthesis/sha256.hpp"
@@ -18,11 +20,6 @@
 namespace ms {
 
 namespace fs = std::filesystem;
-
-std::string resolve_protocol_path(const Protocol& protocol, const std::string& path) {
-  const fs::path p(path);
-  return (p.is_absolute() ? p : fs::path(protocol.base_dir) / p).lexically_normal().string();
-}
 
 namespace {
 
@@ -40,7 +37,10 @@ std::string number_text(double v) {
 }  // namespace
 
 StimulusCache::StimulusCache(const Protocol& protocol, std::string cache_dir)
-    : protocol_(protocol), cache_dir_(std::move(cache_dir)), sample_rate_hz_(protocol.sample_rate_hz) {
+    : protocol_(protocol),
+      cache_dir_(std::move(cache_dir)),
+      sample_rate_hz_(protocol.sample_rate_hz),
+      confinement_(protocol_confinement(protocol)) {
   // Derived stimuli hash their parent's hash, so parents come first (the validator rejects cycles;
   // the depth bound keeps a cycle that slipped through from looping).
   std::set<std::string> pending;
@@ -50,10 +50,9 @@ StimulusCache::StimulusCache(const Protocol& protocol, std::string cache_dir)
       if (!pending.count(s.name)) continue;
       switch (s.kind) {
         case StimulusKind::paramset: {
-          auto p = std::make_shared<const ParamSet>(load_paramset(resolve_protocol_path(protocol_, s.path), s.overrides));
-          if (p->sample_rate_hz != sample_rate_hz_)
-            throw InputError(s.path_where, "parameter set renders at " + number_text(p->sample_rate_hz) +
-                                               " Hz but the protocol's sample_rate is " + number_text(sample_rate_hz_));
+          auto p = std::make_shared<const ParamSet>(
+              load_paramset(confined_stimulus_path(protocol_, s, confinement_), s.overrides, &confinement_));
+          check_paramset_stimulus(protocol_, s, *p);
           hashes_[s.name] = p->recipe_hash;
           paramsets_[s.name] = std::move(p);
           break;
@@ -65,7 +64,12 @@ StimulusCache::StimulusCache(const Protocol& protocol, std::string cache_dir)
           break;
         }
         case StimulusKind::file:
-          hashes_[s.name] = sha256_file_hex(resolve_protocol_path(protocol_, s.path));
+          try {
+            hashes_[s.name] = sha256_file_hex(confined_stimulus_path(protocol_, s, confinement_));
+          } catch (const InputError& e) {
+            if (e.where().file != resolve_protocol_path(protocol_, s.path)) throw;
+            stimulus_file_problem(s, e.problem());
+          }
           break;
       }
       pending.erase(s.name);
@@ -135,14 +139,7 @@ Samples StimulusCache::make(const std::string& name) {
         return lowpass_anchor(*parent, sample_rate_hz_, s.lowpass_hz);
       });
     case StimulusKind::file:
-      return lookup_or_render(h, [&] {
-        const std::string path = resolve_protocol_path(protocol_, s.path);
-        const Audio a = read_audio(path);
-        if (a.sample_rate_hz != sample_rate_hz_)
-          throw InputError(s.path_where, "recording '" + s.path + "' is at " + number_text(a.sample_rate_hz) +
-                                             " Hz but the protocol's sample_rate is " + number_text(sample_rate_hz_));
-        return mono(a);
-      });
+      return lookup_or_render(h, [&] { return read_recording_stimulus(protocol_, s, confinement_); });
   }
   return nullptr;
 }
@@ -161,7 +158,7 @@ std::optional<double> StimulusCache::parameter_value(const std::string& name, co
   if (s.kind != StimulusKind::paramset) return std::nullopt;
   const std::string path = resolve_protocol_path(protocol_, s.path);
   try {
-    YAML::Node node = YAML::LoadFile(path);
+    YAML::Node node = YAML::Load(read_bounded_file(path, kYamlFileLimit));
     apply_overrides(node, s.overrides);
     for (std::size_t start = 0;;) {  // walk the dotted path
       const auto dot = key.find('.', start);
@@ -182,7 +179,7 @@ std::string StimulusCache::hash_with(const std::string& name, const std::vector<
   const StimulusSource& s = source(name);
   if (s.kind != StimulusKind::paramset)
     throw InputError(s.where, "stimulus '" + name + "' is not a parameter set, so its parameters cannot change");
-  return load_paramset(resolve_protocol_path(protocol_, s.path), with(s.overrides, extra)).recipe_hash;
+  return load_paramset(confined_stimulus_path(protocol_, s, confinement_), with(s.overrides, extra), &confinement_).recipe_hash;
 }
 
 Samples StimulusCache::samples_with(const std::string& name, const std::vector<std::string>& extra) {
@@ -191,7 +188,7 @@ Samples StimulusCache::samples_with(const std::string& name, const std::vector<s
   if (s.kind != StimulusKind::paramset)
     throw InputError(s.where, "stimulus '" + name + "' is not a parameter set, so its parameters cannot change");
   // Loading resolves the recipe (and its hash); rendering happens only on a cache miss.
-  const ParamSet p = load_paramset(resolve_protocol_path(protocol_, s.path), with(s.overrides, extra));
+  const ParamSet p = load_paramset(confined_stimulus_path(protocol_, s, confinement_), with(s.overrides, extra), &confinement_);
   return lookup_or_render(p.recipe_hash, [&] { return render_stimulus(p).audio.samples; });
 }
 

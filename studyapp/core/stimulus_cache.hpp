@@ -12,7 +12,9 @@
 #include <vector>
 
 #include "studyapp/core/protocol.hpp"
+#include "studyapp/core/stimulus_checks.hpp"
 #include "synthesis/paramset.hpp"
+#include "synthesis/path_confinement.hpp"
 
 namespace ms {
 
@@ -53,6 +55,7 @@ class StimulusCache {
   const Protocol& protocol_;
   std::string cache_dir_;
   double sample_rate_hz_;
+  Confinement confinement_;  // protocol_confinement(protocol): every file the stimuli reach
   std::map<std::string, std::string> hashes_;
   std::map<std::string, std::shared_ptr<const ParamSet>> paramsets_;  // loaded once, by stimulus name
   mutable std::mutex mutex_;
@@ -60,7 +63,5 @@ class StimulusCache {
   std::size_t renders_ = 0;
 };
 
-// Absolute path of a protocol's stimulus file or parameter set (relative to the protocol's folder).
-std::string resolve_protocol_path(const Protocol& protocol, const std::string& path);
 
 }  // namespace ms

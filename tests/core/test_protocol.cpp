@@ -8,10 +8,16 @@
 #include "studyapp/core/protocol_validator.hpp"
 #include "studyapp/core/schedule.hpp"
 #include "support/test_util.hpp"
+#include "synthesis/audio_file.hpp"
 
 namespace {
 
 using ms::test::TempDir;
+
+// A real (short) recording: protocol check reads every recording as a session start does.
+void write_recording(const ms::test::TempDir& dir, const std::string& name) {
+  ms::write_wav(dir.file(name), ms::Audio{44100, 1, std::vector<float>(441, 0.1f)}, ms::SampleFormat::float32);
+}
 
 const std::string kHead =
     "study: t\ntitle: T\nseed: 7\nstimuli:\n"
@@ -20,8 +26,8 @@ const std::string kHead =
 
 // Writes a protocol with two existing (empty) recordings next to it and checks it.
 std::vector<std::string> check(const TempDir& dir, const std::string& text, bool allow_outside = false) {
-  dir.write("a.wav", "x");
-  dir.write("b.wav", "x");
+  write_recording(dir, "a.wav");
+  write_recording(dir, "b.wav");
   const std::string path = dir.write("p.yaml", text);
   ms::ValidateOptions o;
   o.allow_outside = allow_outside;
@@ -72,7 +78,7 @@ TEST(Protocol, MissingStimulusSuggestsNearest) {
 
 TEST(Protocol, PathEscapingTheFolderIsRejectedUnlessAllowed) {
   TempDir dir;
-  dir.write("outside.wav", "x");
+  write_recording(dir, "outside.wav");
   const std::string text = "study: t\nstimuli:\n  a: {file: ../outside.wav}\n"
                            "blocks:\n  - {type: identify, stimuli: [a], labels: [x]}\n";
   const std::string path = dir.write("sub/p.yaml", text);
@@ -154,7 +160,10 @@ TEST(Protocol, ParamsetOverrideErrorsPointAtTheProtocol) {
       "/stimuli/bar/sterling-steel.yaml, set: {duration_s: -1}}\nblocks:\n  - {type: identify, stimuli: [s], labels: [x]}\n";
   const auto p = check(dir, text, true);
   ASSERT_EQ(p.size(), 1u) << all(p);
-  EXPECT_TRUE(has(p, dir.file("p.yaml") + ":3:3: stimulus 's': duration_s")) << all(p);
+  // At the override's value: line 3, the column of "-1".
+  const std::size_t line3 = text.find("  s: {");
+  const std::string column = std::to_string(text.find("-1") - line3 + 1);
+  EXPECT_TRUE(has(p, dir.file("p.yaml") + ":3:" + column + ": stimulus 's': duration_s: must be greater than 0")) << all(p);
 }
 
 TEST(Protocol, DemoValidatesWithZeroProblems) {

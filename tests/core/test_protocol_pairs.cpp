@@ -6,15 +6,21 @@
 #include "studyapp/core/protocol_validator.hpp"
 #include "studyapp/core/schedule.hpp"
 #include "support/test_util.hpp"
+#include "synthesis/audio_file.hpp"
 
 namespace {
 
 using ms::test::TempDir;
 
+// A real (short) recording: protocol check reads every recording as a session start does.
+void write_recording(const ms::test::TempDir& dir, const std::string& name) {
+  ms::write_wav(dir.file(name), ms::Audio{44100, 1, std::vector<float>(441, 0.1f)}, ms::SampleFormat::float32);
+}
+
 const std::string kHead = "study: t\nseed: 3\nstimuli:\n  a: {file: a.wav}\n  b: {file: b.wav}\n  r: {file: r.wav}\n";
 
 std::vector<std::string> check(const TempDir& dir, const std::string& text) {
-  for (const char* f : {"a.wav", "b.wav", "r.wav"}) dir.write(f, "x");
+  for (const char* f : {"a.wav", "b.wav", "r.wav"}) write_recording(dir, f);
   return ms::check_protocol_file(dir.write("p.yaml", text)).problems;
 }
 
