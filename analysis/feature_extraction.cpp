@@ -158,6 +158,9 @@ std::optional<std::string> recording_problem(const std::vector<float>& samples, 
     bottom = std::min(bottom, v);
   }
   if (top == 0.0f && bottom == 0.0f) return "silent: every sample is zero";
+  // A constant (DC) signal sits at its own extremes everywhere without having been clipped.
+  if (std::all_of(samples.begin(), samples.end(), [&](float v) { return v == samples.front(); }))
+    return "constant: every sample is " + std::to_string(samples.front()) + " (no impact in it)";
   // Clipping: runs of 3+ consecutive samples pinned at either rail, over 0.1 % of the recording.
   std::size_t pinned = 0, run = 0;
   float rail_prev = 0.0f;

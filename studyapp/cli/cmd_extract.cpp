@@ -32,7 +32,8 @@ void register_extract(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("extract", "Extract modal features (f, d, amp) from impact recordings");
   cmd->add_option("wav", opt->inputs, "Recordings (WAV/FLAC/AIFF)")->required();
   CLI::Option* output = cmd->add_option("-o,--output", opt->output, "Write FEATURES.csv (sound,freq_hz,decay_per_s,amp)");
-  cmd->add_option("--channel", opt->channel, "0-based channel to analyse (default: mix to mono)");
+  cmd->add_option("--channel", opt->channel, "0-based channel to analyse (default: mix to mono)")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_option("--skip-contact-ms", opt->skip_contact_ms,
                   "Start fitting this long after the onset (the strike's contact is not modal); "
                   "amplitudes are extrapolated back to the onset (default 0.5; 0 for ideal impulses)")

@@ -1,9 +1,10 @@
-// modalstudy synth PARAMSET.yaml -o OUT.wav [--set key=value]... [--format F] [--json]
+// modalstudy synth PARAMSET.yaml -o OUT.wav [--set key=value]... [--format F] [--allow-outside] [--json]
 #include <nlohmann/json.hpp>
 
 #include <iostream>
 
 #include "studyapp/cli/commands.hpp"
+#include "synthesis/atomic_file.hpp"
 #include "synthesis/audio_file.hpp"
 #include "synthesis/input_error.hpp"
 #include "synthesis/modes_csv.hpp"
@@ -16,7 +17,7 @@ void register_synth(CLI::App& app) {
   struct Options {
     std::string paramset, output, format, modes_out;
     std::vector<std::string> sets;
-    bool json = false;
+    bool json = false, allow_outside = false;
   };
   auto opt = std::make_shared<Options>();
   CLI::App* cmd = app.add_subcommand("synth", "Render one parameter set to a WAV file");
@@ -25,10 +26,15 @@ void register_synth(CLI::App& app) {
   cmd->add_option("--set", opt->sets, "Override a key, e.g. --set excitation.contact_s=0.002");
   cmd->add_option("--format", opt->format, "float32 | pcm24 | pcm16 (default: the set's output.format)");
   cmd->add_option("--modes-out", opt->modes_out, "Also write the rendered modes as a modes CSV");
+  cmd->add_flag("--allow-outside", opt->allow_outside,
+                "Allow files the set names (a modes CSV) outside its folder and the project's stimuli/");
   cmd->add_flag("--json", opt->json, "Print one JSON object describing the result");
   cmd->callback([opt] {
-    ParamSet p = load_paramset(opt->paramset, opt->sets);
+    remove_temporaries_on_signals();  // Ctrl-C while a long render is written leaves no .tmp file
+    const Confinement anywhere = Confinement::anywhere();
+    ParamSet p = load_paramset(opt->paramset, opt->sets, opt->allow_outside ? &anywhere : nullptr);
     if (!opt->format.empty()) {
+      p.format_where = SourceLocation{"--format", 0, 0};
       try {
         p.format = parse_sample_format(opt->format);
       } catch (const std::invalid_argument& e) {
@@ -36,6 +42,7 @@ void register_synth(CLI::App& app) {
       }
     }
     const RenderedStimulus r = render_stimulus(p);
+    check_writable(p, r.audio, p.format_where);
     write_wav(opt->output, r.audio, p.format);
     if (!opt->modes_out.empty()) {
       std::vector<std::string> ignored;

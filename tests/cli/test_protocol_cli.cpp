@@ -3,11 +3,17 @@
 #include <nlohmann/json.hpp>
 
 #include "support/test_util.hpp"
+#include "synthesis/audio_file.hpp"
 
 using ms::test::run_cli;
 using ms::test::TempDir;
 
 namespace {
+// A real (short) recording: protocol check reads every recording as a session start does.
+void write_recording(const ms::test::TempDir& dir, const std::string& name) {
+  ms::write_wav(dir.file(name), ms::Audio{44100, 1, std::vector<float>(441, 0.1f)}, ms::SampleFormat::float32);
+}
+
 const std::string kDemo = std::string(MODALSTUDY_SOURCE_DIR) + "/protocols/demo.yaml";
 }
 
@@ -22,7 +28,7 @@ TEST(ProtocolCli, DemoChecksClean) {
 
 TEST(ProtocolCli, EveryProblemOnItsOwnLineAndExit2) {
   TempDir dir;
-  dir.write("a.wav", "x");
+  write_recording(dir, "a.wav");
   const std::string p = dir.write("p.yaml",
                                   "study: t\nstimuli:\n  a: {file: a.wav}\nblocks:\n"
                                   "  - {type: ab, id: x, pairs: [[a, c]]}\n  - {type: abb}\n"
