@@ -9,13 +9,14 @@
 
 namespace ms {
 
-// A parsed CSV file. Fields may be quoted ("a, b", "say ""hi"""); quoted fields may span lines.
-// Blank lines and lines starting with '#' (outside quotes) are skipped. Unquoted fields are
-// trimmed of surrounding spaces and tabs.
+// A parsed CSV file, split by synthesis/csv.hpp (RFC 4180: quotes, CRLF, a UTF-8 BOM; blank and
+// '#' lines skipped, unquoted fields trimmed). The header's first name may be empty: the row-names
+// column of R's write.csv and pandas' to_csv.
 class TidyCsv {
  public:
   // Parses `text`; `file` names the source in error messages. Throws InputError for an empty table,
-  // an unterminated quote or a row whose cell count differs from the header's.
+  // an unterminated quote, an empty or duplicate column name (but the first) or a row whose cell
+  // count differs from the header's.
   static TidyCsv parse(const std::string& text, const std::string& file);
   // Reads and parses a file (InputError "no such file" / "cannot read file").
   static TidyCsv read(const std::string& path);

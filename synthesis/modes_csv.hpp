@@ -1,5 +1,6 @@
 // Modes CSV: a header naming at least freq_hz, decay_per_s, amp (any order; optional phase_rad;
-// other columns ignored), then one mode per row. Errors name file:line:column.
+// other columns ignored), then one mode per row, read and written by synthesis/csv.hpp (RFC 4180,
+// BOM, quotes). Errors name file:line:column.
 #pragma once
 #include <string>
 #include <vector>

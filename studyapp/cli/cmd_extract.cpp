@@ -5,14 +5,15 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <sstream>
 
 #include "analysis/feature_extraction.hpp"
 #include "studyapp/cli/commands.hpp"
 #include "synthesis/atomic_file.hpp"
 #include "synthesis/audio_file.hpp"
+#include "synthesis/csv.hpp"
 #include "synthesis/input_error.hpp"
 
 namespace ms::cli {
@@ -70,27 +71,27 @@ void register_extract(CLI::App& app) {
       results.emplace_back(std::filesystem::path(path).stem().string(), std::move(f));
     }
     if (!opt->output.empty()) {
-      std::ostringstream csv;
-      csv.precision(10);
-      csv << "sound,freq_hz,decay_per_s,amp" << (opt->errors ? ",freq_sd_hz,decay_sd_per_s,amp_sd" : "") << "\n";
-      // Empty where the data do not determine the value (an infinite bound).
-      auto cell = [&csv](double v) {
-        csv << ",";
-        if (std::isfinite(v)) csv << v;
+      // 10 significant digits; empty where the data do not determine the value (an infinite bound).
+      auto g10 = [](double v) {
+        if (!std::isfinite(v)) return std::string();
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.10g", v);
+        return std::string(buf);
       };
+      std::vector<std::string> header{"sound", "freq_hz", "decay_per_s", "amp"};
+      if (opt->errors) header.insert(header.end(), {"freq_sd_hz", "decay_sd_per_s", "amp_sd"});
+      std::string csv = csv::line(header);
       for (const auto& [name, f] : results)
         for (std::size_t k = 0; k < f.modes.size(); ++k) {
           const Mode& m = f.modes[k];
-          csv << name << "," << m.freq_hz << "," << m.decay_per_s << "," << m.amp;
+          std::vector<std::string> cells{name, g10(m.freq_hz), g10(m.decay_per_s), g10(m.amp)};
           if (opt->errors) {
             const ModePrecision& p = f.precision[k];
-            cell(p.freq_sd_hz);
-            cell(p.decay_sd_per_s);
-            cell(p.amp_sd);
+            cells.insert(cells.end(), {g10(p.freq_sd_hz), g10(p.decay_sd_per_s), g10(p.amp_sd)});
           }
-          csv << "\n";
+          csv += csv::line(cells);
         }
-      write_file_atomically(opt->output, csv.str());
+      write_file_atomically(opt->output, csv);
     }
     if (opt->json) {
       nlohmann::json sounds = nlohmann::json::array();

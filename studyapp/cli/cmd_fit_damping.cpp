@@ -18,6 +18,7 @@
 #include "analysis/emg_likelihood.hpp"
 #include "studyapp/cli/commands.hpp"
 #include "synthesis/atomic_file.hpp"
+#include "synthesis/csv.hpp"
 #include "synthesis/input_error.hpp"
 
 namespace ms::cli {
@@ -33,14 +34,16 @@ std::string format_g(double v) {
 // Per point: the data, the fitted c and the residual, for plotting (sorted as in the input).
 std::string plot_data_csv(const std::vector<DampingFeature>& features, const std::vector<DampingPoint>& points,
                           const DampingLaw& law) {
-  std::string out = "sound,freq_hz,lambda_rad2_s2,c_per_s,c_fit_per_s,residual_per_s\n";
-  char buf[256];
+  std::string out = csv::line({"sound", "freq_hz", "lambda_rad2_s2", "c_per_s", "c_fit_per_s", "residual_per_s"});
+  auto g17 = [](double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return std::string(buf);
+  };
   for (std::size_t i = 0; i < points.size(); ++i) {
     const double fit = damping_c_per_s(law, points[i].lambda_rad2_s2);
-    std::snprintf(buf, sizeof buf, ",%.17g,%.17g,%.17g,%.17g,%.17g\n", features[i].freq_hz,
-                  points[i].lambda_rad2_s2, points[i].c_per_s, fit, points[i].c_per_s - fit);
-    out += features[i].sound;
-    out += buf;
+    out += csv::line({features[i].sound, g17(features[i].freq_hz), g17(points[i].lambda_rad2_s2),
+                      g17(points[i].c_per_s), g17(fit), g17(points[i].c_per_s - fit)});
   }
   return out;
 }

@@ -10,6 +10,7 @@
 #include "studyapp/core/results_store.hpp"
 #include "studyapp/core/tidy_tables.hpp"
 #include "synthesis/atomic_file.hpp"
+#include "synthesis/csv.hpp"
 #include "synthesis/input_error.hpp"
 
 namespace ms {
@@ -38,16 +39,6 @@ std::string number_cell(double v) {
 }
 
 }  // namespace
-
-std::string csv_field(const std::string& value) {
-  if (value.find_first_of(",\"\r\n") == std::string::npos) return value;
-  std::string out = "\"";
-  for (char c : value) {
-    if (c == '"') out += '"';
-    out += c;
-  }
-  return out + "\"";
-}
 
 std::string iso8601_utc(std::int64_t unix_ms) {
   std::int64_t secs = unix_ms / 1000, ms = unix_ms % 1000;
@@ -84,29 +75,23 @@ ExportSummary export_results(const std::string& db_path, const std::string& out_
                                  number_cell(r.rt_ms),
                                  std::to_string(r.plays),
                                  iso8601_utc(r.timestamp_ms)};
-    bool first = true;
-    for (const std::string& c : cells) {
-      if (!first) csv += ',';
-      csv += csv_field(c);
-      first = false;
-    }
-    csv += "\r\n";  // RFC 4180 line ending
+    csv += csv::line({std::begin(cells), std::end(cells)});
   }
 
   // The schedule with the recipe hash of every stimulus, and every play/stop/switch/step event.
-  std::string trials_csv = csv_line({"study", "participant", "session", "block", "block_type", "trial", "stimuli",
+  std::string trials_csv = csv::line({"study", "participant", "session", "block", "block_type", "trial", "stimuli",
                                      "stimulus_hashes"});
   for (const TrialRow& t : store.trial_rows()) {
     std::string hashes;
     for (const auto& h : nlohmann::json::parse(t.hashes_json)) hashes += (hashes.empty() ? "" : ";") + h.get<std::string>();
-    trials_csv += csv_line({t.study, exported_participant(t.participant_code, t.participant, t.export_personal),
+    trials_csv += csv::line({t.study, exported_participant(t.participant_code, t.participant, t.export_personal),
                             std::to_string(t.session), t.block_id, t.block_type, std::to_string(t.trial_index),
                             stimuli_cell(t.stimuli_json), hashes});
   }
-  std::string events_csv = csv_line({"study", "participant", "session", "block", "block_type", "trial", "event",
+  std::string events_csv = csv::line({"study", "participant", "session", "block", "block_type", "trial", "event",
                                      "stimulus", "stimulus_hash", "detail", "timestamp"});
   for (const EventRow& e : store.event_rows())
-    events_csv += csv_line({e.study, exported_participant(e.participant_code, e.participant, e.export_personal),
+    events_csv += csv::line({e.study, exported_participant(e.participant_code, e.participant, e.export_personal),
                             std::to_string(e.session), e.block_id, e.block_type, std::to_string(e.trial_index), e.kind,
                             e.stimulus, e.stimulus_hash, e.detail_json, iso8601_utc(e.timestamp_ms)});
   const auto tables = tidy_tables(rows);

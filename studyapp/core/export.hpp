@@ -20,9 +20,6 @@ struct ExportSummary {
 // then nothing is written. out_dir is created if missing.
 ExportSummary export_results(const std::string& db_path, const std::string& out_dir);
 
-// One CSV field, quoted per RFC 4180 when it holds a comma, quote, CR or LF.
-std::string csv_field(const std::string& value);
-
 // Unix milliseconds as ISO 8601 UTC with milliseconds, e.g. 2023-11-14T22:13:20.000Z.
 std::string iso8601_utc(std::int64_t unix_ms);
 

@@ -3,7 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "studyapp/core/export.hpp"
+#include "synthesis/csv.hpp"
 
 namespace ms {
 
@@ -21,12 +21,6 @@ std::string cell(const nlohmann::json& v) {
 std::string exported_participant(const std::string& code, std::int64_t id, bool export_personal) {
   // Codes are often names or initials: opaque ids unless the study allows personal fields.
   return export_personal ? code : "p" + std::to_string(id);
-}
-
-std::string csv_line(const std::vector<std::string>& cells) {
-  std::string out;
-  for (std::size_t i = 0; i < cells.size(); ++i) out += (i ? "," : "") + csv_field(cells[i]);
-  return out + "\r\n";
 }
 
 std::map<std::string, std::string> tidy_tables(const std::vector<ResponseRow>& rows) {
@@ -48,14 +42,14 @@ std::map<std::string, std::string> tidy_tables(const std::vector<ResponseRow>& r
     if (csv.empty()) {
       std::vector<std::string> header = key;
       header.insert(header.end(), cols->second.begin(), cols->second.end());
-      csv = csv_line(header);
+      csv = csv::line(header);
     }
     const std::vector<std::string> k{r.study, exported_participant(r.participant_code, r.participant, r.export_personal),
                                      std::to_string(r.session), r.block_id, std::to_string(r.trial_index)};
     auto add = [&](const std::vector<std::string>& rest) {
       std::vector<std::string> line = k;
       line.insert(line.end(), rest.begin(), rest.end());
-      csv += csv_line(line);
+      csv += csv::line(line);
     };
     const auto s = nlohmann::json::parse(r.stimuli_json);
     const auto v = nlohmann::json::parse(r.value_json);

@@ -16,7 +16,4 @@ std::map<std::string, std::string> tidy_tables(const std::vector<ResponseRow>& r
 // The participant as exported: the code if the study allows personal fields, else "p<id>".
 std::string exported_participant(const std::string& code, std::int64_t id, bool export_personal);
 
-// One CSV line (cells quoted per RFC 4180 as needed), CRLF-terminated.
-std::string csv_line(const std::vector<std::string>& cells);
-
 }  // namespace ms

@@ -45,3 +45,30 @@ TEST(TidyCsv, ErrorsNameFileLineColumn) {
   EXPECT_THROW(TidyCsv::parse("", "empty.csv"), InputError);
   EXPECT_THROW(TidyCsv::read("/nonexistent/x.csv"), InputError);
 }
+
+// Files written by R's write.csv(as.matrix(eurodist)) and pandas' to_csv() (tests/data/csv/make_files.*):
+// the header starts with an empty cell (the row names), pandas' second file has a BOM, CRLF and quotes.
+TEST(TidyCsv, ReadsRAndPandasLabelledMatrices) {
+  const std::string dir = std::string(MODALSTUDY_SOURCE_DIR) + "/tests/data/csv/";
+  for (const char* file : {"eurodist_r.csv", "eurodist_pandas.csv", "eurodist_pandas_bom_quoted.csv"}) {
+    const TidyCsv t = TidyCsv::read(dir + file);
+    ASSERT_EQ(t.header().size(), 22u) << file;
+    EXPECT_EQ(t.header()[0], "") << file;
+    EXPECT_EQ(t.header()[1], "Athens") << file;
+    EXPECT_EQ(t.header()[11], "Hook of Holland") << file;
+    ASSERT_EQ(t.rows(), 21u) << file;
+    EXPECT_EQ(t.cell(0, 0), "Athens") << file;
+    EXPECT_EQ(t.number(0, 2), 3313.0) << file;  // Athens - Barcelona, km
+    EXPECT_EQ(t.number(20, 1), 1991.0) << file;  // Vienna - Athens
+  }
+}
+
+TEST(TidyCsv, OnlyTheFirstColumnNameMayBeEmpty) {
+  EXPECT_NO_THROW(TidyCsv::parse(",a\nx,1\n", "r.csv"));
+  try {
+    TidyCsv::parse("a,,b\n1,2,3\n", "e.csv");
+    FAIL() << "an empty column name was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "e.csv:1:3: empty column name in header");
+  }
+}

@@ -38,7 +38,7 @@ TEST(CliSynth, RendersWavAndJson) {
   std::ifstream csv(dir.file("modes.csv"));
   std::string header;
   std::getline(csv, header);
-  EXPECT_EQ(header, "freq_hz,decay_per_s,amp,phase_rad");
+  EXPECT_EQ(header, "freq_hz,decay_per_s,amp,phase_rad\r");  // RFC 4180 CRLF
 }
 
 TEST(CliSynth, BadInputIsOneLineExit2AndNoFile) {

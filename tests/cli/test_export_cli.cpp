@@ -9,6 +9,7 @@
 
 #include "analysis/tidy_csv.hpp"
 #include "studyapp/core/export.hpp"
+#include "synthesis/csv.hpp"
 #include "studyapp/core/results_store.hpp"
 #include "support/test_util.hpp"
 
@@ -130,10 +131,10 @@ TEST(ExportCli, BadInputExitsTwoAndWritesNothing) {
 }
 
 TEST(ExportCli, CsvFieldQuotesPerRfc4180) {
-  EXPECT_EQ(csv_field("plain"), "plain");
-  EXPECT_EQ(csv_field("a,b"), "\"a,b\"");
-  EXPECT_EQ(csv_field("say \"x\""), "\"say \"\"x\"\"\"");
-  EXPECT_EQ(csv_field("two\nlines"), "\"two\nlines\"");
+  EXPECT_EQ(ms::csv::field("plain"), "plain");
+  EXPECT_EQ(ms::csv::field("a,b"), "\"a,b\"");
+  EXPECT_EQ(ms::csv::field("say \"x\""), "\"say \"\"x\"\"\"");
+  EXPECT_EQ(ms::csv::field("two\nlines"), "\"two\nlines\"");
   EXPECT_EQ(iso8601_utc(kT0), "2023-11-14T22:13:20.000Z");
   EXPECT_EQ(iso8601_utc(-1), "1969-12-31T23:59:59.999Z");
 }

@@ -115,7 +115,7 @@ TEST_F(ExtractCli, CsvAndJsonCarryTheModes) {
   EXPECT_GT(s["modes"][1]["freq_sd_hz"].get<double>(), f0_sd);
   EXPECT_LE(std::abs(s["modes"][0]["freq_hz"].get<double>() - 523.0), 5.0 * f0_sd);
   const std::string text = slurp(csv);
-  EXPECT_EQ(text.rfind("sound,freq_hz,decay_per_s,amp\n", 0), 0u) << text;
+  EXPECT_EQ(text.rfind("sound,freq_hz,decay_per_s,amp\r\n", 0), 0u) << text;
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 3) << text;
   EXPECT_NE(text.find("\nbowl,523"), std::string::npos) << text;
 }
@@ -127,7 +127,7 @@ TEST_F(ExtractCli, ErrorsAddColumnsTheOtherCommandsStillRead) {
   const CliRun r = run("extract " + wav.string() + " --errors -o " + csv.string());
   ASSERT_EQ(r.code, 0) << r.err;
   const std::string text = slurp(csv);
-  EXPECT_EQ(text.rfind("sound,freq_hz,decay_per_s,amp,freq_sd_hz,decay_sd_per_s,amp_sd\n", 0), 0u) << text;
+  EXPECT_EQ(text.rfind("sound,freq_hz,decay_per_s,amp,freq_sd_hz,decay_sd_per_s,amp_sd\r\n", 0), 0u) << text;
   ASSERT_EQ(std::count(text.begin(), text.end(), '\n'), 3) << text;
   // Each row: 7 fields, the three error bars positive numbers.
   std::istringstream rows(text);

@@ -112,7 +112,7 @@ TEST_F(FitDampingCli, TableAndPlotData) {
   std::ifstream in(plot);
   std::string line;
   std::getline(in, line);
-  EXPECT_EQ(line, "sound,freq_hz,lambda_rad2_s2,c_per_s,c_fit_per_s,residual_per_s");
+  EXPECT_EQ(line, "sound,freq_hz,lambda_rad2_s2,c_per_s,c_fit_per_s,residual_per_s\r");  // RFC 4180 CRLF
   int rows = 0;
   double min_residual = INFINITY;
   while (std::getline(in, line)) {

@@ -158,9 +158,9 @@ TEST_F(PruneCli, KeepWritesTheFirstKSurvivorsInOrder) {
   const CliRun r = run("m.csv --method masking --order energy --keep 2 -o out.csv --json");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(slurp(path("out.csv")),
-            "freq_hz,decay_per_s,amp,phase_rad\n"
-            "60,0.5,0.40000000000000002,0\n"
-            "1000,1,0.5,0\n");
+            "freq_hz,decay_per_s,amp,phase_rad\r\n"
+            "60,0.5,0.40000000000000002,0\r\n"
+            "1000,1,0.5,0\r\n");
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["written"], 2);
   EXPECT_EQ(j["kept"], nlohmann::json({2, 1, 0}));  // kept lists every survivor
@@ -168,7 +168,7 @@ TEST_F(PruneCli, KeepWritesTheFirstKSurvivorsInOrder) {
   // Without --keep, -o writes every survivor; --keep beyond the survivors writes what there is.
   ASSERT_EQ(run("m.csv --method naive -o all.csv").code, 0);
   EXPECT_EQ(slurp(path("all.csv")),
-            "freq_hz,decay_per_s,amp,phase_rad\n1100,10,1,0\n1000,1,0.5,0\n60,0.5,0.40000000000000002,0\n");
+            "freq_hz,decay_per_s,amp,phase_rad\r\n1100,10,1,0\r\n1000,1,0.5,0\r\n60,0.5,0.40000000000000002,0\r\n");
   const CliRun more = run("m.csv --method masking --keep 50 -o more.csv");
   ASSERT_EQ(more.code, 0) << more.err;
   EXPECT_NE(more.out.find("wrote 3 modes"), std::string::npos) << more.out;
