@@ -1,6 +1,9 @@
-// Threshold of an adaptive staircase track (Levitt 1971): the mean of the levels at the last k
-// reversals, a reversal being a trial at which the direction of the level changes (steps of zero
-// size do not change the direction). With log_scale the mean is geometric (levels in ratio units).
+// Threshold of an adaptive staircase track (Levitt 1971), the one definition used by the live track
+// (studyapp/core/staircase_track), the export's staircase.csv and `modalstudy stats staircase`.
+// A reversal is a trial after which the level moves in the direction opposite to its previous move
+// (trials after which it does not move change nothing); its level is the level presented at that
+// trial. The threshold is the mean level of the reversals after the first two (of all of them when
+// there are at most four), or of the last k when k is given; with log_scale the mean is geometric.
 #pragma once
 #include <cstddef>
 #include <optional>
@@ -8,14 +11,25 @@
 
 namespace ms {
 
+struct StaircaseOptions {
+  std::optional<std::size_t> last_k;  // average the last k reversals instead of all but the first two
+  bool log_scale = false;             // geometric mean (levels on a ratio scale, all > 0)
+};
+
 struct StaircaseThreshold {
   std::vector<std::size_t> reversal_trials;  // 0-based trial index of every reversal
   std::vector<double> reversal_levels;
-  std::size_t used = 0;                      // reversals averaged (min(k, available))
+  std::size_t used = 0;                      // reversals averaged
   std::optional<double> threshold;           // none without reversals
   std::optional<double> sd;                  // of the used reversal levels (log units with log_scale), used >= 2
 };
 
-StaircaseThreshold staircase_threshold(const std::vector<double>& levels, std::size_t last_k, bool log_scale = false);
+// `levels` are the levels presented, in order; `next_level` is where the track moved after the last
+// answer (without it a reversal at the last trial cannot be seen, and is not counted).
+StaircaseThreshold staircase_threshold(const std::vector<double>& levels, std::optional<double> next_level,
+                                       const StaircaseOptions& options = {});
+
+// Reversals skipped by default: the approach to the threshold, not the threshold.
+std::size_t staircase_default_skip(std::size_t reversals);
 
 }  // namespace ms

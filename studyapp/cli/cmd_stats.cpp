@@ -31,6 +31,7 @@
 #include "analysis/tidy_csv.hpp"
 #include "studyapp/cli/commands.hpp"
 #include "synthesis/atomic_file.hpp"
+#include "synthesis/csv.hpp"
 #include "synthesis/input_error.hpp"
 
 namespace ms::cli {
@@ -704,27 +705,42 @@ void register_ab(CLI::App& group) {
 
 void register_staircase(CLI::App& group) {
   struct Options {
-    std::string data, level, trial;
+    std::string data, level, trial, next_level = "next_level";
     std::vector<std::string> track;
-    std::size_t reversals = 6;
+    std::size_t reversals = 0;
     bool log_scale = false, json = false;
   };
   auto opt = std::make_shared<Options>();
-  CLI::App* cmd = group.add_subcommand("staircase", "Adaptive-staircase thresholds: mean of the last K reversals per track");
+  CLI::App* cmd = group.add_subcommand(
+      "staircase", "Adaptive-staircase thresholds per track: mean reversal level after the first two (as the protocol's)");
   cmd->add_option("data", opt->data, "Tidy CSV, one row per trial")->required();
   cmd->add_option("--level", opt->level, "Column of the stimulus level presented")->required();
   cmd->add_option("--track", opt->track, "Column(s) identifying a track (e.g. participant, staircase)");
   cmd->add_option("--trial", opt->trial, "Column ordering the trials (default: file order)");
-  cmd->add_option("--reversals", opt->reversals, "Reversals averaged (the last K)")->check(CLI::Range(1, 1000));
+  cmd->add_option("--next-level", opt->next_level,
+                  "Column of the level after each answer, so a reversal at a track's last trial counts (used when "
+                  "present)")
+      ->capture_default_str();
+  cmd->add_option("--reversals", opt->reversals,
+                  "Average the last K reversals (default: all but the first two, all when there are at most four)")
+      ->check(CLI::Range(1, 1000));
   cmd->add_flag("--log", opt->log_scale, "Geometric mean (levels on a ratio scale)");
   cmd->add_flag("--json", opt->json, "Print one JSON object");
   cmd->callback([opt] {
     const TidyCsv table = TidyCsv::read(opt->data);
     const std::size_t cl = table.column(opt->level);
     const std::size_t ct = opt->trial.empty() ? 0 : table.column(opt->trial);
+    const bool has_next = table.has_column(opt->next_level);
+    const std::size_t cn = has_next ? table.column(opt->next_level) : 0;
     if (table.rows() == 0) throw InputError(SourceLocation{table.file(), 0, 0}, "no data rows");
+    StaircaseOptions so;
+    if (opt->reversals > 0) so.last_k = opt->reversals;
+    so.log_scale = opt->log_scale;
     nlohmann::json tracks = nlohmann::json::array();
     std::vector<std::string> notices;
+    if (!has_next)
+      notices.push_back("no column '" + opt->next_level +
+                        "' (the level after each answer): a reversal at a track's last trial is not counted");
     std::vector<double> thresholds;
     for (auto [name, rows] : group_rows(table, opt->track)) {
       if (!opt->trial.empty()) {
@@ -739,11 +755,13 @@ void register_staircase(CLI::App& group) {
         if (opt->log_scale && !(levels.back() > 0))
           throw InputError(table.where(r, cl), "column '" + opt->level + "': --log needs levels above 0");
       }
-      const StaircaseThreshold t = staircase_threshold(levels, opt->reversals, opt->log_scale);
-      if (t.used < opt->reversals)
+      std::optional<double> next;
+      if (has_next) next = table.number(rows.back(), cn);
+      const StaircaseThreshold t = staircase_threshold(levels, next, so);
+      if (so.last_k && t.used < *so.last_k)
         notices.push_back("track '" + (name.empty() ? std::string("all") : name) + "' has " +
                           std::to_string(t.reversal_levels.size()) + " reversals, fewer than " +
-                          std::to_string(opt->reversals));
+                          std::to_string(*so.last_k));
       if (t.threshold) thresholds.push_back(*t.threshold);
       tracks.push_back({{"track", name}, {"trials", levels.size()}, {"reversal_levels", t.reversal_levels},
                         {"used", t.used}, {"threshold", opt_json(t.threshold)}, {"sd", opt_json(t.sd)}});
@@ -755,8 +773,10 @@ void register_staircase(CLI::App& group) {
     }
     print_notices(notices, opt->data);
     if (opt->json) {
-      std::cout << nlohmann::json{{"reversals", opt->reversals}, {"log", opt->log_scale}, {"tracks", tracks},
-                                  {"overall", overall}, {"notices", notices}}.dump() << "\n";
+      std::cout << nlohmann::json{{"reversals", so.last_k ? nlohmann::json(*so.last_k) : nlohmann::json("all but the first two")},
+                                  {"log", opt->log_scale}, {"tracks", tracks}, {"overall", overall},
+                                  {"notices", notices}}.dump()
+                << "\n";
       return;
     }
     std::printf("%-20s %7s %10s %6s %12s\n", "Track", "trials", "reversals", "used", "threshold");
@@ -830,13 +850,13 @@ void register_mds(CLI::App& group) {
                {"best_start", r.best_start}, {"starts", opt->starts + 1}, {"seed", opt->seed}};
     }
     if (!opt->output.empty()) {
-      std::string csv = "label";
-      for (int k = 0; k < opt->dims; ++k) csv += ",dim" + std::to_string(k + 1);
-      csv += "\n";
+      std::vector<std::string> header{"label"};
+      for (int k = 0; k < opt->dims; ++k) header.push_back("dim" + std::to_string(k + 1));
+      std::string csv = csv::line(header);
       for (std::size_t i = 0; i < d.labels.size(); ++i) {
-        csv += d.labels[i];
-        for (int k = 0; k < opt->dims; ++k) csv += "," + fmt("%.17g", points(Eigen::Index(i), k));
-        csv += "\n";
+        std::vector<std::string> cells{d.labels[i]};
+        for (int k = 0; k < opt->dims; ++k) cells.push_back(fmt("%.17g", points(Eigen::Index(i), k)));
+        csv += csv::line(cells);
       }
       write_file_atomically(opt->output, csv);
     }
@@ -912,14 +932,14 @@ void register_magnitude(CLI::App& group) {
     so.seed = opt->seed;
     const SmacofResult map = smacof(m.dissimilarity, so);
     if (!opt->output.empty()) {
-      std::string csv = "token";
-      for (const auto& l : m.labels) csv += "," + l;
-      csv += "\n";
+      std::vector<std::string> header{"token"};
+      header.insert(header.end(), m.labels.begin(), m.labels.end());
+      std::string csv = csv::line(header);
       for (std::size_t i = 0; i < m.labels.size(); ++i) {
-        csv += m.labels[i];
+        std::vector<std::string> cells{m.labels[i]};
         for (std::size_t j = 0; j < m.labels.size(); ++j)
-          csv += "," + fmt("%.17g", m.dissimilarity(Eigen::Index(i), Eigen::Index(j)));
-        csv += "\n";
+          cells.push_back(fmt("%.17g", m.dissimilarity(Eigen::Index(i), Eigen::Index(j))));
+        csv += csv::line(cells);
       }
       write_file_atomically(opt->output, csv);
     }

@@ -37,13 +37,7 @@ bool StaircaseTrack::finished() const {
 
 std::optional<double> StaircaseTrack::threshold() const {
   // The level the track moved to after the last answer counts too: its last reversal happened there.
-  std::vector<double> path = levels_;
-  path.push_back(level_);
-  const StaircaseThreshold all = staircase_threshold(path, path.size());
-  const std::size_t n = all.reversal_levels.size();
-  if (n == 0) return std::nullopt;
-  const std::size_t skip = n > 4 ? 2 : 0;  // the approach, not the threshold
-  return staircase_threshold(path, n - skip).threshold;
+  return staircase_threshold(levels_, level_).threshold;
 }
 
 }  // namespace ms

@@ -21,8 +21,7 @@ class StaircaseTrack {
   std::size_t reversals() const { return reversal_count_; }
   const std::vector<double>& levels() const { return levels_; }    // presented, in order
   const std::vector<bool>& answers() const { return answers_; }
-  // Mean of the reversal levels after the first two (all of them when there are at most four), as
-  // analysis/staircase counts them over the presented levels followed by the level the track ended on.
+  // analysis/staircase's threshold of levels() with level() as the level after the last answer.
   std::optional<double> threshold() const;
 
  private:

@@ -79,17 +79,43 @@ TEST(SignalDetection, ClosedForms) {
   EXPECT_DOUBLE_EQ(corrected_rate(7, 20), 0.35);
 }
 
+StaircaseOptions last(std::size_t k, bool log_scale = false) {
+  StaircaseOptions o;
+  o.last_k = k;
+  o.log_scale = log_scale;
+  return o;
+}
+
 TEST(Staircase, HandTrack) {
   // Down, down, up (reversal at 6), up, down (reversal at 8), flat, down, up (reversal at 5).
   const std::vector<double> levels = {10, 8, 6, 7, 8, 7, 7, 5, 6};
-  const auto t = staircase_threshold(levels, 2);
+  const auto t = staircase_threshold(levels, std::nullopt, last(2));
   ASSERT_EQ(t.reversal_levels, (std::vector<double>{6, 8, 5}));
   EXPECT_EQ(t.reversal_trials, (std::vector<std::size_t>{2, 4, 7}));
   EXPECT_EQ(t.used, 2u);
   EXPECT_DOUBLE_EQ(*t.threshold, 6.5);
   EXPECT_NEAR(*t.sd, std::sqrt(4.5), 1e-12);
-  EXPECT_NEAR(*staircase_threshold(levels, 3, true).threshold, std::cbrt(6.0 * 8 * 5), 1e-12);
-  EXPECT_FALSE(staircase_threshold({1, 2, 3}, 4).threshold.has_value());
+  EXPECT_NEAR(*staircase_threshold(levels, std::nullopt, last(3, true)).threshold, std::cbrt(6.0 * 8 * 5), 1e-12);
+  EXPECT_FALSE(staircase_threshold({1, 2, 3}, std::nullopt, last(4)).threshold.has_value());
+  // Default: at most four reversals are all averaged.
+  EXPECT_DOUBLE_EQ(*staircase_threshold(levels, std::nullopt).threshold, (6.0 + 8 + 5) / 3);
+}
+
+TEST(Staircase, NextLevelCountsAReversalAtTheLastTrial) {
+  // 10 9 8 9 10 9 8 9 10 9 8 (then up to 9): reversals at 8, 10, 8, 10, 8 - the last seen only with
+  // the level after the last answer.
+  const std::vector<double> levels = {10, 9, 8, 9, 10, 9, 8, 9, 10, 9, 8};
+  const auto without = staircase_threshold(levels, std::nullopt);
+  EXPECT_EQ(without.reversal_levels, (std::vector<double>{8, 10, 8, 10}));
+  EXPECT_DOUBLE_EQ(*without.threshold, 9.0);  // four: all
+  const auto with = staircase_threshold(levels, 9.0);
+  EXPECT_EQ(with.reversal_levels, (std::vector<double>{8, 10, 8, 10, 8}));
+  EXPECT_EQ(with.reversal_trials.back(), 10u);
+  EXPECT_EQ(with.used, 3u);  // five: the first two skipped
+  EXPECT_DOUBLE_EQ(*with.threshold, (8.0 + 10 + 8) / 3);
+  // Levels far from zero: the standard deviation does not cancel.
+  const auto far = staircase_threshold({1e9 + 1, 1e9, 1e9 + 1, 1e9}, 1e9 + 1, last(3));
+  EXPECT_NEAR(*far.sd, std::sqrt(1.0 / 3.0), 1e-6);
 }
 
 // Levitt (1971): a 1-up/2-down rule converges on the 70.7 % point of the psychometric function.
@@ -118,7 +144,7 @@ TEST(Staircase, OneUpTwoDownConvergesTo707Percent) {
         run = 0;
       }
     }
-    sum += *staircase_threshold(levels, 8).threshold;
+    sum += *staircase_threshold(levels, level, last(8)).threshold;
   }
   EXPECT_NEAR(sum / tracks, target, 0.25) << "70.7% point " << target;
 }

@@ -39,9 +39,9 @@ TEST(StaircaseTrack, ThresholdMatchesAnalysisStaircase) {
   for (bool a : answers)
     if (!t.finished()) t.record(a);
   // analysis/staircase counts reversals from the presented levels (and the final one), averaging the last k.
-  std::vector<double> path = t.levels();
-  path.push_back(t.level());
-  const auto ref = staircase_threshold(path, 1000);
+  StaircaseOptions all;
+  all.last_k = 1000;
+  const auto ref = staircase_threshold(t.levels(), t.level(), all);
   EXPECT_EQ(ref.reversal_levels.size(), t.reversals());
   ASSERT_TRUE(ref.threshold.has_value());
   ASSERT_TRUE(t.threshold().has_value());
