@@ -47,11 +47,13 @@ AutopilotSummary run_autopilot(const AutopilotOptions& o, const std::function<vo
   AutopilotSummary summary;
   summary.db_path = o.db_path.empty() ? default_db_path(o.protocol_path, protocol.study) : o.db_path;
   if (const auto dir = fs::path(summary.db_path).parent_path(); !dir.empty()) fs::create_directories(dir);
-  Session session(protocol, text.str(), o.participant, summary.db_path, cache.hashes(), unix_now_ms());
+  Session session(protocol, text.str(), o.participant, summary.db_path, cache.hashes(), unix_now_ms(),
+                  SessionStart{o.new_session, true});
+  summary.warnings = session.warnings();
   summary.session = session.id();
   summary.resumed = session.resumed();
   summary.total = session.total();
-  SimulatedListener listener(cache, o.seed ^ std::hash<std::string>{}(o.participant));
+  SimulatedListener listener(cache, o.seed ^ std::hash<std::string>{}(session.participant()));
   while (!session.finished() && (o.stop_after == 0 || summary.answered_now < o.stop_after)) {
     const Trial trial = session.current();
     const Block& block = session.current_block();

@@ -17,6 +17,7 @@ struct AutopilotOptions {
   std::string cache_dir;       // "" = memory only
   std::uint64_t seed = 1;
   bool allow_outside = false;
+  bool new_session = false;    // run a participant who finished once more
   std::size_t stop_after = 0;  // answer at most this many trials, then return (0 = all; for tests)
 };
 
@@ -26,6 +27,7 @@ struct AutopilotSummary {
   bool resumed = false;
   std::size_t answered_now = 0, total = 0;
   bool finished = false;
+  std::vector<std::string> warnings;  // see Session::warnings
 };
 
 // A protocol that does not validate: what() is the first problem (one line); problems() all of them.

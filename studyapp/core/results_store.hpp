@@ -1,12 +1,17 @@
 // ResultsStore: one SQLite file holding a study's participants, sessions, trials, responses and
 // playback events. Every response is durable (committed, fsynced) before record_response returns.
+// The file is created atomically (schema built in a temporary file, then linked into place), checked
+// on every open (a damaged file is refused by name and never written to), and each running session
+// is leased to one process (see session_lease.hpp).
 #pragma once
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "studyapp/core/session_lease.hpp"
 #include "studyapp/core/sqlite_handle.hpp"
+#include "synthesis/input_error.hpp"
 
 namespace ms {
 
@@ -58,6 +63,35 @@ struct SessionRecord {
   std::int64_t id = 0, participant = 0, started_ms = 0;
   std::optional<std::int64_t> finished_ms;
   std::uint64_t schedule_seed = 0;
+  bool autopilot = false;  // answered (at least in part) by the simulated listener
+};
+
+// What a program asks for when it opens a participant's session (ResultsStore::open_session).
+struct SessionRequest {
+  std::string study_id, participant;  // participant already normalised (participant_id.hpp)
+  std::int64_t now_ms = 0;
+  std::uint64_t schedule_seed = 0;
+  std::vector<TrialRecord> trials;  // the schedule, stored when a new session starts
+  bool new_session = false;         // start another session for a participant who finished
+  bool autopilot = false;           // the simulated listener will answer
+  LeaseHolder holder;               // who will run it (this_process())
+};
+
+struct OpenedSession {
+  std::int64_t participant = 0, session = 0;
+  bool resumed = false;
+};
+
+// The participant already finished and no new session was asked for.
+class ParticipantFinished : public InputError {
+ public:
+  using InputError::InputError;
+};
+
+// Another running process holds the session's lease.
+class SessionInUse : public InputError {
+ public:
+  using InputError::InputError;
 };
 
 // A session's completion, for the experimenter's overview.
@@ -66,6 +100,7 @@ struct SessionSummary {
   std::int64_t session = 0, started_ms = 0;
   std::optional<std::int64_t> finished_ms;
   std::int64_t trials = 0, responses = 0;
+  bool autopilot = false;
 };
 
 // Where a stored row belongs: study, participant, session, block and trial (the export's key columns).
@@ -75,6 +110,7 @@ struct TrialContext {
   std::string participant_code;
   bool export_personal = false;
   std::int64_t session = 0;
+  bool autopilot = false;  // the session was answered by the simulated listener
   int block_index = 0;
   std::string block_id, block_type;
   int trial_index = 0;
@@ -102,14 +138,27 @@ struct TrialRow : TrialContext {
 
 class ResultsStore {
  public:
-  static constexpr int kSchemaVersion = 1;
+  // 2: sessions.autopilot and the leases table (a version-1 file is migrated when opened for writing).
+  static constexpr int kSchemaVersion = 2;
   static constexpr int kApplicationId = 0x4d535444;  // "MSTD" in PRAGMA application_id
 
   enum class Mode { create_or_open, open_existing, read_only };
 
-  // Throws ms::InputError naming `path` if the file is not a ModalStudy database or has a newer
-  // schema; such a file is never modified. open_existing/read_only also refuse a missing file.
+  // Throws ms::InputError naming `path` if the file is not a ModalStudy database, is damaged
+  // (PRAGMA quick_check; integrity_check when read_only) or has a newer schema; such a file is never
+  // modified. open_existing/read_only also refuse a missing file. create_or_open treats an empty file
+  // (left by a creation that was killed or ran out of disk) as missing.
   explicit ResultsStore(const std::string& path, Mode mode = Mode::create_or_open);
+
+  // In one transaction: adds the study (see add_study) and the participant if new, then resumes the
+  // participant's unfinished session or starts one (recording `trials`), and leases it to
+  // `request.holder`. Throws ParticipantFinished if the participant finished and !new_session,
+  // SessionInUse if a live process holds the unfinished session, InputError if that session was
+  // scheduled with another seed. Nothing is stored when it throws.
+  OpenedSession open_session(const StudyRecord& study, const SessionRequest& request);
+  // Renews the lease's heartbeat; throws SessionInUse if another process took the session over.
+  void renew_lease(std::int64_t session, const LeaseHolder& holder, std::int64_t now_ms);
+  void release_lease(std::int64_t session, const LeaseHolder& holder);
 
   // Adds the study, or checks an existing one with the same id has the same protocol hash.
   void add_study(const StudyRecord& study);
@@ -128,25 +177,36 @@ class ResultsStore {
   std::optional<TrialPosition> first_unanswered_trial(std::int64_t session) const;
 
   std::optional<std::int64_t> find_participant(const std::string& study_id, const std::string& code) const;
+  std::vector<std::string> participant_codes(const std::string& study_id) const;
   // The participant's most recent session without a finish time.
   std::optional<SessionRecord> unfinished_session(std::int64_t participant) const;
+  // The participant's most recent session, finished or not.
+  std::optional<SessionRecord> latest_session(std::int64_t participant) const;
   std::vector<SessionSummary> session_summaries() const;
   std::vector<TrialPosition> answered_trials(std::int64_t session) const;
   std::vector<PlaybackEvent> events(std::int64_t session, TrialPosition trial) const;  // in order
 
   std::vector<StudyRecord> studies() const;
   std::optional<ResponseRecord> response(std::int64_t session, TrialPosition trial) const;
+  // The export's rows. Each throws InputError if it would return fewer rows than its table holds
+  // (rows whose participant or study can no longer be joined): an export never drops rows silently.
   std::vector<ResponseRow> response_rows() const;  // ordered by session, block, trial
   std::vector<EventRow> event_rows() const;        // ordered by session, then as logged
   std::vector<TrialRow> trial_rows() const;        // ordered by session, block, trial
   std::int64_t count(const std::string& table) const;  // rows in one of the store's tables
   std::string integrity_check() const;                  // "ok" when PRAGMA integrity_check passes
   const std::string& path() const { return db_.path(); }
+  int schema_version() const { return schema_version_; }
 
  private:
-  bool created_;  // this object created the file (and so may write the schema into it)
+  void insert_trials(std::int64_t session, const std::vector<TrialRecord>& trials);
+  void check_lease(std::int64_t session, const LeaseHolder& holder, std::int64_t now_ms);
+  const char* autopilot_column() const;  // "s.autopilot", or "0" in a read-only version-1 file
+
   sqlite::Database db_;
-  std::optional<sqlite::Statement> insert_response_, insert_event_;
+  int schema_version_ = kSchemaVersion;
+  LeaseHolder me_ = this_process();
+  bool writable_ = false;
 };
 
 }  // namespace ms

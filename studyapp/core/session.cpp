@@ -3,9 +3,13 @@
 
 #include <algorithm>
 #include <chrono>
+#include <condition_variable>
+#include <mutex>
 #include <set>
 #include <stdexcept>
+#include <thread>
 
+#include "studyapp/core/participant_id.hpp"
 #include "studyapp/core/response_format.hpp"
 #include "synthesis/input_error.hpp"
 #include "synthesis/sha256.hpp"
@@ -41,31 +45,65 @@ std::int64_t unix_now_ms() {
       .count();
 }
 
-Session::Session(const Protocol& protocol, const std::string& protocol_text, const std::string& participant,
-                 const std::string& db_path, const std::map<std::string, std::string>& stimulus_hashes,
-                 std::int64_t now_ms)
-    : protocol_(protocol), schedule_(make_schedule(protocol, participant)) {
-  if (participant.empty()) throw InputError(SourceLocation{protocol.file, 0, 0}, "the participant id is empty");
-  store_ = std::make_unique<ResultsStore>(db_path);
-  store_->add_study({protocol.study, protocol.title, sha256_hex(protocol_text), protocol_text, protocol.export_personal});
-  const auto known = store_->find_participant(protocol.study, participant);
-  const std::int64_t pid = known ? *known : store_->add_participant(protocol.study, participant, now_ms);
-  if (known) {
-    if (const auto open = store_->unfinished_session(pid)) {
-      // Same protocol text (checked by add_study) and participant give the same schedule; the stored
-      // seed guards against a schedule algorithm that changed between versions.
-      if (open->schedule_seed != schedule_.seed)
-        throw InputError(SourceLocation{db_path, 0, 0},
-                         "session " + std::to_string(open->id) + " of participant '" + participant +
-                             "' was scheduled with another seed; start a new database for this version");
-      session_ = open->id;
-      resumed_ = true;
+// Renews the session's lease every kHeartbeatMs on a connection of its own, so an idle participant
+// (reading instructions, on a break) keeps the session. Stops when destroyed.
+class Session::Heartbeat {
+ public:
+  Heartbeat(const std::string& db_path, std::int64_t session)
+      : thread_([this, db_path, session] { run(db_path, session); }) {}
+  ~Heartbeat() {
+    {
+      std::lock_guard lock(mutex_);
+      stop_ = true;
+    }
+    wake_.notify_all();
+    thread_.join();
+  }
+
+ private:
+  void run(const std::string& db_path, std::int64_t session) {
+    std::unique_lock lock(mutex_);
+    std::unique_ptr<ResultsStore> store;
+    while (!wake_.wait_for(lock, std::chrono::milliseconds(kHeartbeatMs), [this] { return stop_; })) {
+      try {
+        if (!store) store = std::make_unique<ResultsStore>(db_path, ResultsStore::Mode::open_existing);
+        store->renew_lease(session, this_process(), unix_now_ms());
+      } catch (const std::exception&) {
+        // A busy or lost lease is found by the next write of the session itself, which refuses it.
+      }
     }
   }
-  if (!resumed_) {
-    session_ = store_->start_session(pid, now_ms, schedule_.seed);
-    store_->record_trials(session_, trial_records(schedule_, stimulus_hashes));
-  }
+
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool stop_ = false;
+  std::thread thread_;
+};
+
+Session::Session(const Protocol& protocol, const std::string& protocol_text, const std::string& participant,
+                 const std::string& db_path, const std::map<std::string, std::string>& stimulus_hashes,
+                 std::int64_t now_ms, const SessionStart& start)
+    : protocol_(protocol),
+      participant_(normalize_participant_id(participant)),
+      schedule_(make_schedule(protocol, participant_)) {
+  store_ = std::make_unique<ResultsStore>(db_path);
+  for (const auto& other : look_alike_ids(participant_, store_->participant_codes(protocol.study)))
+    warnings_.push_back("participant id '" + participant_ + "' differs only by case or spaces from '" + other +
+                        "', who is already in this database: check it is not a typo");
+  SessionRequest request;
+  request.study_id = protocol.study;
+  request.participant = participant_;
+  request.now_ms = now_ms;
+  request.schedule_seed = schedule_.seed;
+  request.trials = trial_records(schedule_, stimulus_hashes);
+  request.new_session = start.new_session;
+  request.autopilot = start.autopilot;
+  request.holder = this_process();
+  const OpenedSession opened = store_->open_session(
+      {protocol.study, protocol.title, sha256_hex(protocol_text), protocol_text, protocol.export_personal}, request);
+  session_ = opened.session;
+  resumed_ = opened.resumed;
+  heartbeat_ = std::make_unique<Heartbeat>(db_path, session_);
   // The first trial, in schedule order, without a stored answer.
   std::set<std::pair<int, int>> done;
   for (const auto& p : store_->answered_trials(session_)) done.insert({p.block_index, p.trial_index});
@@ -84,6 +122,14 @@ Session::Session(const Protocol& protocol, const std::string& protocol_text, con
         track_rt_ms_ += d.value("rt_ms", 0.0);
         ++track_plays_;
       }
+  }
+}
+
+Session::~Session() {
+  heartbeat_.reset();
+  try {
+    store_->release_lease(session_, this_process());
+  } catch (const std::exception&) {  // a lease left behind is stale once this process is gone
   }
 }
 

@@ -2,7 +2,8 @@
 // the results store before the session moves on; opening the same study + participant + database
 // again resumes the unfinished session at its first unanswered trial with the same schedule.
 // Staircase trials run their track inside the trial: each step is committed as a "step" event, so a
-// track interrupted by a crash continues where it stopped.
+// track interrupted by a crash continues where it stopped. While a Session object lives it holds the
+// session's lease (a heartbeat thread renews it), so no other process can answer for the participant.
 #pragma once
 #include <cstdint>
 #include <map>
@@ -20,14 +21,28 @@
 
 namespace ms {
 
+struct SessionStart {
+  bool new_session = false;  // run a participant who finished the study once more (a new session)
+  bool autopilot = false;    // the simulated listener answers (marked in the store and the export)
+};
+
 class Session {
  public:
-  // `stimulus_hashes` (name -> hash, see StimulusCache) are stored with each scheduled trial.
-  // Throws InputError if the database belongs to a different version of the same study (protocol
-  // hash differs) or is not a ModalStudy database.
+  // `stimulus_hashes` (name -> hash, see StimulusCache) are stored with each scheduled trial. The
+  // participant id is normalised (participant_id.hpp). Throws InputError if the database belongs to
+  // a different version of the same study (protocol hash differs) or is not a ModalStudy database,
+  // ParticipantFinished if the participant finished and !start.new_session, SessionInUse if another
+  // live process runs the participant's session.
   Session(const Protocol& protocol, const std::string& protocol_text, const std::string& participant,
           const std::string& db_path, const std::map<std::string, std::string>& stimulus_hashes,
-          std::int64_t now_ms);
+          std::int64_t now_ms, const SessionStart& start = {});
+  ~Session();  // releases the lease
+  Session(const Session&) = delete;
+  Session& operator=(const Session&) = delete;
+
+  const std::string& participant() const { return participant_; }  // as normalised
+  // Things the person starting the session should read, e.g. an id that looks like another one.
+  const std::vector<std::string>& warnings() const { return warnings_; }
 
   const Protocol& protocol() const { return protocol_; }
   const Schedule& schedule() const { return schedule_; }
@@ -62,8 +77,10 @@ class Session {
 
  private:
   void advance();
+  class Heartbeat;
 
   const Protocol& protocol_;
+  std::string participant_;
   Schedule schedule_;
   std::unique_ptr<ResultsStore> store_;
   std::int64_t session_ = 0;
@@ -73,6 +90,8 @@ class Session {
   std::optional<StaircaseTrack> track_;
   int track_plays_ = 0;
   double track_rt_ms_ = 0.0;
+  std::vector<std::string> warnings_;
+  std::unique_ptr<Heartbeat> heartbeat_;
 };
 
 // Milliseconds since the Unix epoch (system clock).

@@ -8,6 +8,8 @@
 #include <iostream>
 
 #include "studyapp/core/autopilot.hpp"
+#include "studyapp/core/participant_status.hpp"
+#include "studyapp/core/protocol_parser.hpp"
 #include "studyapp/core/protocol_validator.hpp"
 #include "synthesis/input_error.hpp"
 
@@ -23,6 +25,7 @@ std::optional<int> parse_command_line(int argc, char** argv, AppOptions& options
   app.add_option("--audio", options.audio, "Audio output: default, null (no sound, events still logged) or a device name")
       ->capture_default_str();
   app.add_flag("--allow-outside", options.allow_outside, "Allow stimulus files outside the protocol's and stimuli/ folders");
+  app.add_flag("--new-session", options.new_session, "Run a participant who already finished the study once more");
   app.add_option("--autopilot", options.autopilot_seed, "Answer every trial with the simulated listener (headless), seeded");
   app.add_option("--experimenter", options.experimenter_db, "Open the experimenter view of a results database");
   try {
@@ -45,6 +48,26 @@ bool report_protocol_problems(const AppOptions& options) {
   return check.problems.empty() && check.protocol.has_value();
 }
 
+bool report_participant_refusal(const AppOptions& options) {
+  if (options.participant.empty() || options.protocol_path.empty()) return false;
+  try {
+    const Protocol protocol = load_protocol(options.protocol_path);
+    const std::string db = options.db_path.empty() ? default_db_path(options.protocol_path, protocol.study) : options.db_path;
+    const ParticipantStatus status = participant_status(db, protocol.study, options.participant);
+    for (const auto& other : status.look_alikes)
+      std::cerr << "studyapp: warning: participant id '" << status.participant << "' differs only by case or spaces from '"
+                << other << "', who is already in " << db << "\n";
+    if (status.state == ParticipantStatus::State::finished && !options.new_session) {
+      std::cerr << "studyapp: " << describe(status) << "; use --new-session to run it again\n";
+      return true;
+    }
+  } catch (const InputError& e) {
+    std::cerr << "studyapp: " << e.what() << "\n";
+    return true;
+  }
+  return false;
+}
+
 int run_autopilot_command(const AppOptions& options) {
   AutopilotOptions a;
   a.protocol_path = options.protocol_path;
@@ -53,8 +76,10 @@ int run_autopilot_command(const AppOptions& options) {
   a.cache_dir = options.cache_dir.empty() ? default_cache_dir() : options.cache_dir;
   a.seed = *options.autopilot_seed;
   a.allow_outside = options.allow_outside;
+  a.new_session = options.new_session;
   try {
     const AutopilotSummary s = run_autopilot(a);
+    for (const auto& w : s.warnings) std::cerr << "studyapp: warning: " << w << "\n";
     std::cout << "studyapp: autopilot " << (s.resumed ? "resumed" : "ran") << " session " << s.session << ": answered "
               << s.answered_now << " trials now, " << (s.finished ? "finished" : "not finished") << " (" << s.total
               << " trials)\nresults: " << s.db_path << "\n";

@@ -14,6 +14,7 @@ struct AppOptions {
   std::string cache_dir;                  // "" = default_cache_dir()
   std::string audio = "default";          // default | null | a device description
   bool allow_outside = false;
+  bool new_session = false;               // --new-session: run a participant who finished once more
   std::optional<std::uint64_t> autopilot_seed;
   std::string experimenter_db;            // --experimenter DB: open the experimenter view only
 };
@@ -23,6 +24,11 @@ std::optional<int> parse_command_line(int argc, char** argv, AppOptions& options
 
 // Prints every problem of the protocol as "studyapp: PROBLEM" on stderr; true when there are none.
 bool report_protocol_problems(const AppOptions& options);
+
+// With --participant: true (after one line on stderr) for a participant who finished the study and no
+// --new-session, or a results file that cannot be read; prints look-alike id warnings. A session
+// another process holds is refused when the window opens it (Session throws SessionInUse).
+bool report_participant_refusal(const AppOptions& options);
 
 // `--autopilot SEED`: runs the simulated listener headless and prints a summary; returns the exit code.
 int run_autopilot_command(const AppOptions& options);

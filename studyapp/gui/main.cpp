@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   if (const auto code = ms::gui::parse_command_line(argc, argv, options)) return *code;
   if (options.autopilot_seed) return ms::gui::run_autopilot_command(options);
   if (!options.protocol_path.empty() && !ms::gui::report_protocol_problems(options)) return 2;
+  if (ms::gui::report_participant_refusal(options)) return 2;
 
   QApplication app(argc, argv);
   QApplication::setApplicationName("studyapp");

@@ -123,9 +123,11 @@ TEST(ResultsStore, ForeignFilesAreRefusedByNameAndLeftUntouched) {
     EXPECT_NE(std::string(e.what()).find("not a ModalStudy results database"), std::string::npos) << e.what();
   }
   EXPECT_EQ(slurp(csv), "stimuli,response\na,b\n");
+  // An empty file is what an interrupted creation leaves: only a run that may create takes it as new.
   const std::string empty = dir.write("empty.sqlite", "");
-  EXPECT_THROW(ResultsStore{empty}, InputError);
+  EXPECT_THROW(ResultsStore(empty, ResultsStore::Mode::open_existing), InputError);
   EXPECT_EQ(std::filesystem::file_size(empty), 0u);
+  EXPECT_EQ(ResultsStore{empty}.integrity_check(), "ok");
 
   // Another application's SQLite database.
   const std::string other = dir.file("other.sqlite");

@@ -106,8 +106,9 @@ TEST(Session, ReopeningResumesAtTheFirstUnansweredTrialWithTheSameSchedule) {
   while (!again.finished()) again.answer(good_answer(again), 100.0, 1, 6000);
   EXPECT_EQ(again.store().count("responses"), 6);
   EXPECT_EQ(again.store().count("sessions"), 1);
-  // A finished participant starts a new session next time (e.g. a second visit).
-  Session next(p, slurp(path), "P02", dir.file("r.sqlite"), cache.hashes(), 9000);
+  // A finished participant is refused; a second visit is asked for explicitly.
+  EXPECT_THROW(Session(p, slurp(path), "P02", dir.file("r.sqlite"), cache.hashes(), 9000), ParticipantFinished);
+  Session next(p, slurp(path), "P02", dir.file("r.sqlite"), cache.hashes(), 9000, SessionStart{true, false});
   EXPECT_FALSE(next.resumed());
   EXPECT_EQ(next.current_index(), 0u);
 }
