@@ -1,14 +1,13 @@
 // Greedy damped-sinusoid pursuit (FFTW); see damped_pursuit.hpp.
 #include "analysis/damped_pursuit.hpp"
 
-#include <fftw3.h>
-
 #include <algorithm>
 #include <cmath>
 #include <complex>
 #include <numbers>
 
 #include "analysis/subband.hpp"
+#include "synthesis/fft.hpp"
 
 namespace ms {
 namespace {
@@ -30,9 +29,9 @@ std::size_t damped_pursuit(const std::vector<double>& x, double fs, std::vector<
   // Zero padding to 4x the window: atoms on a grid a quarter of the window's resolution apart.
   const std::size_t size = nice_fft_size(std::max<std::size_t>(4 * window, 8192));
   const double bin_hz = fs / double(size);
-  double* in = fftw_alloc_real(size);
-  fftw_complex* out = fftw_alloc_complex(size / 2 + 1);
-  fftw_plan plan = fftw_plan_dft_r2c_1d(int(size), in, out, FFTW_ESTIMATE);
+  RealFft fft(size);
+  double* in = fft.real();
+  const std::complex<double>* out = fft.spectrum();
   std::fill(in, in + size, 0.0);
   // Decay envelopes and their energies, computed once.
   std::vector<std::vector<double>> env(o.decays_per_s.size(), std::vector<double>(window));
@@ -66,10 +65,10 @@ std::size_t damped_pursuit(const std::vector<double>& x, double fs, std::vector<
     cd best_s, best_b;
     for (std::size_t j = 0; j < env.size(); ++j) {
       for (std::size_t n = 0; n < window; ++n) in[n] = r[n] * env[j][n];
-      fftw_execute(plan);
+      fft.forward();
       const double inv_env_noise = 1.0 / env_noise[j];  // once per decay, not per bin
       for (std::size_t k = k_lo; k <= k_hi; ++k) {
-        const cd y(out[k][0], -out[k][1]);  // sum r[n] conj(e^{s n})
+        const cd y(out[k].real(), -out[k].imag());  // sum r[n] conj(e^{s n})
         // Least-squares energy of Re(b e^{s n}) with b = 2 conj-projection / envelope energy.
         const double inv = std::min(inv_noise[k], inv_env_noise);
         const double gain = 2.0 * std::norm(y) / env_energy[j] * inv;
@@ -112,9 +111,6 @@ std::size_t damped_pursuit(const std::vector<double>& x, double fs, std::vector<
     comps.insert(comps.end(), local.begin(), local.end());
     ++added;
   }
-  fftw_destroy_plan(plan);
-  fftw_free(out);
-  fftw_free(in);
   return added;
 }
 

@@ -1,11 +1,11 @@
 // Short-time low-quantile noise envelope (FFTW); see noise_envelope.hpp.
 #include "analysis/noise_envelope.hpp"
 
-#include <fftw3.h>
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+
+#include "synthesis/fft.hpp"
 
 namespace ms {
 
@@ -94,9 +94,9 @@ NoiseEnvelope estimate_noise_envelope(const std::vector<double>& x, double fs, d
   const std::size_t k_lo = std::max<std::size_t>(1, std::size_t(std::ceil(kLowestHz * double(window) / fs)));
   const std::size_t k_hi = std::min(window / 2 - 1, std::size_t(kHighestShare * double(window)));
   if (k_hi <= k_lo + 16) return env;
-  double* in = fftw_alloc_real(window);
-  fftw_complex* out = fftw_alloc_complex(window / 2 + 1);
-  fftw_plan plan = fftw_plan_dft_r2c_1d(int(window), in, out, FFTW_ESTIMATE);
+  RealFft fft(window);
+  double* in = fft.real();
+  const std::complex<double>* out = fft.spectrum();
   std::vector<double> w(window), power(k_hi - k_lo + 1);
   double window_energy = 0.0;
   for (std::size_t i = 0; i < window; ++i) {
@@ -107,15 +107,12 @@ NoiseEnvelope estimate_noise_envelope(const std::vector<double>& x, double fs, d
   std::vector<double> estimate(frames);
   for (std::size_t f = 0; f < frames; ++f) {
     for (std::size_t i = 0; i < window; ++i) in[i] = w[i] * x[f * hop + i];
-    fftw_execute(plan);
-    for (std::size_t k = k_lo; k <= k_hi; ++k) power[k - k_lo] = out[k][0] * out[k][0] + out[k][1] * out[k][1];
+    fft.forward();
+    for (std::size_t k = k_lo; k <= k_hi; ++k) power[k - k_lo] = out[k].real() * out[k].real() + out[k].imag() * out[k].imag();
     const auto q = power.begin() + std::ptrdiff_t(double(power.size()) * kQuantile);
     std::nth_element(power.begin(), q, power.end());
     estimate[f] = *q * scale;
   }
-  fftw_destroy_plan(plan);
-  fftw_free(out);
-  fftw_free(in);
   // Non-increasing from the right: a frame is at least as noisy as any later one.
   for (std::size_t f = frames - 1; f-- > 0;) estimate[f] = std::max(estimate[f], estimate[f + 1]);
   std::size_t loud = 0;

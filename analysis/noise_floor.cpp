@@ -1,15 +1,13 @@
 // Median-periodogram noise estimate (FFTW); see noise_floor.hpp.
 #include "analysis/noise_floor.hpp"
 
-#include <fftw3.h>
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <optional>
 #include <vector>
 
-#include "analysis/subband.hpp"
+#include "synthesis/fft.hpp"
 
 namespace ms {
 
@@ -29,21 +27,19 @@ std::optional<TailPeriodogram> tail_periodogram(const std::vector<double>& x) {
   TailPeriodogram t;
   t.size = nice_fft_size(n);
   const std::size_t start = x.size() - n;
-  double* in = fftw_alloc_real(t.size);
-  fftw_complex* out = fftw_alloc_complex(t.size / 2 + 1);
-  fftw_plan plan = fftw_plan_dft_r2c_1d(int(t.size), in, out, FFTW_ESTIMATE);
+  RealFft fft(t.size);
+  double* in = fft.real();
   std::fill(in, in + t.size, 0.0);
   for (std::size_t i = 0; i < n; ++i) {
     const double w = 0.5 - 0.5 * std::cos(2.0 * std::numbers::pi * (double(i) + 0.5) / double(n));
     in[i] = w * x[start + i];
     t.window_energy += w * w;
   }
-  fftw_execute(plan);
+  fft.forward();
+  const std::complex<double>* out = fft.spectrum();
   t.power.reserve(t.size / 2);
-  for (std::size_t k = 1; k < t.size / 2; ++k) t.power.push_back(out[k][0] * out[k][0] + out[k][1] * out[k][1]);
-  fftw_destroy_plan(plan);
-  fftw_free(out);
-  fftw_free(in);
+  for (std::size_t k = 1; k < t.size / 2; ++k)
+    t.power.push_back(out[k].real() * out[k].real() + out[k].imag() * out[k].imag());
   return t;
 }
 

@@ -1,36 +1,12 @@
 // FFT sub-band split (FFTW); see subband.hpp.
 #include "analysis/subband.hpp"
 
-#include <fftw3.h>
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
 namespace ms {
 
-std::size_t nice_fft_size(std::size_t at_least) {
-  for (std::size_t n = std::max<std::size_t>(at_least, 1);; ++n) {
-    std::size_t r = n;
-    for (std::size_t p : {2, 3, 5, 7})
-      while (r % p == 0) r /= p;
-    if (r == 1) return n;
-  }
-}
-
-struct SubbandSplitter::Plan {
-  std::size_t size = 0;
-  fftw_complex* buffer = nullptr;
-  fftw_plan plan = nullptr;
-  explicit Plan(std::size_t n) : size(n) {
-    buffer = fftw_alloc_complex(n);
-    plan = fftw_plan_dft_1d(int(n), buffer, buffer, FFTW_BACKWARD, FFTW_ESTIMATE);
-  }
-  ~Plan() {
-    fftw_destroy_plan(plan);
-    fftw_free(buffer);
-  }
-};
 
 SubbandSplitter::SubbandSplitter(const std::vector<double>& x, double sample_rate_hz,
                                  double noise_sigma, const NoiseProfile* noise)
@@ -38,24 +14,18 @@ SubbandSplitter::SubbandSplitter(const std::vector<double>& x, double sample_rat
   // Zero padding of 1/4 keeps the circular wrap of the mask kernels away from the data.
   fft_size_ = nice_fft_size(frames_ + frames_ / 4 + 64);
   bin_hz_ = fs_ / double(fft_size_);
-  double* in = fftw_alloc_real(fft_size_);
-  fftw_complex* out = fftw_alloc_complex(fft_size_ / 2 + 1);
-  fftw_plan plan = fftw_plan_dft_r2c_1d(int(fft_size_), in, out, FFTW_ESTIMATE);
-  std::copy(x.begin(), x.end(), in);
-  std::fill(in + frames_, in + fft_size_, 0.0);
-  fftw_execute(plan);
-  spectrum_.resize(fft_size_ / 2 + 1);
-  for (std::size_t k = 0; k < spectrum_.size(); ++k) spectrum_[k] = {out[k][0], out[k][1]};
-  fftw_destroy_plan(plan);
-  fftw_free(out);
-  fftw_free(in);
+  RealFft fft(fft_size_);
+  std::copy(x.begin(), x.end(), fft.real());
+  std::fill(fft.real() + frames_, fft.real() + fft_size_, 0.0);
+  fft.forward();
+  spectrum_.assign(fft.spectrum(), fft.spectrum() + fft_size_ / 2 + 1);
 }
 
 SubbandSplitter::~SubbandSplitter() = default;
 
-SubbandSplitter::Plan& SubbandSplitter::plan_for(std::size_t size) {
+ComplexInverseFft& SubbandSplitter::plan_for(std::size_t size) {
   auto& p = plans_[size];
-  if (!p) p = std::make_unique<Plan>(size);
+  if (!p) p = std::make_unique<ComplexInverseFft>(size);
   return *p;
 }
 
@@ -73,9 +43,10 @@ BandSignal SubbandSplitter::band(double center_hz, double core_hz, double skirt_
   const double half_core = 0.5 * core_hz, reach = half_core + skirt_hz;
   const long q_max = long(std::ceil(reach / bin_hz_));
   // Decimated rate 10 % above the mask's full width, so nothing aliases.
-  Plan& p = plan_for(nice_fft_size(std::size_t(std::ceil(1.1 * 2.0 * reach / bin_hz_)) + 1));
-  const std::size_t M = p.size;
-  std::fill(reinterpret_cast<double*>(p.buffer), reinterpret_cast<double*>(p.buffer) + 2 * M, 0.0);
+  ComplexInverseFft& p = plan_for(nice_fft_size(std::size_t(std::ceil(1.1 * 2.0 * reach / bin_hz_)) + 1));
+  const std::size_t M = p.size();
+  std::complex<double>* buffer = p.data();
+  std::fill(buffer, buffer + M, std::complex<double>(0.0, 0.0));
   const long half = long(fft_size_ / 2);
   double mask_energy = 0.0, mask_sum = 0.0;
   for (long q = -q_max; q <= q_max; ++q) {
@@ -90,12 +61,11 @@ BandSignal SubbandSplitter::band(double center_hz, double core_hz, double skirt_
     else if (k > half) v = std::conj(spectrum_[std::size_t(2 * half - k)]);
     else v = spectrum_[std::size_t(k)];
     const std::size_t slot = std::size_t((q % long(M) + long(M)) % long(M));
-    p.buffer[slot][0] = w * v.real();
-    p.buffer[slot][1] = w * v.imag();
+    buffer[slot] = w * v;
     mask_energy = std::max(mask_energy, w * w);
     mask_sum += w * w;
   }
-  fftw_execute(p.plan);
+  p.execute();
   BandSignal out;
   out.center_hz = double(kc) * bin_hz_;
   out.rate_hz = double(M) * bin_hz_;
@@ -103,7 +73,7 @@ BandSignal SubbandSplitter::band(double center_hz, double core_hz, double skirt_
   const double scale = 2.0 / double(fft_size_);
   const auto usable = std::min<std::size_t>(M, std::size_t(std::ceil(double(frames_) / fs_ * out.rate_hz)));
   out.samples.resize(usable);
-  for (std::size_t j = 0; j < usable; ++j) out.samples[j] = {scale * p.buffer[j][0], scale * p.buffer[j][1]};
+  for (std::size_t j = 0; j < usable; ++j) out.samples[j] = scale * buffer[j];
   // White noise: E|S_k|^2 = frames sigma^2; per decimated sample at a flat mask of M bins.
   const double var = variance(center_hz - reach, center_hz + reach);
   out.noise_power = scale * scale * double(frames_) * var * double(M) * mask_energy;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "analysis/noise_floor.hpp"
+#include "synthesis/fft.hpp"
 
 namespace ms {
 
@@ -43,19 +44,15 @@ class SubbandSplitter {
   std::size_t data_frames() const { return frames_; }
 
  private:
-  struct Plan;
-  Plan& plan_for(std::size_t size);
+  ComplexInverseFft& plan_for(std::size_t size);  // one per decimated size, kept for the next band
   std::size_t frames_ = 0, fft_size_ = 0;
   double fs_ = 0.0, bin_hz_ = 0.0, sigma_ = 0.0;
   std::vector<std::complex<double>> spectrum_;  // bins 0..fft_size/2
-  std::map<std::size_t, std::unique_ptr<Plan>> plans_;
+  std::map<std::size_t, std::unique_ptr<ComplexInverseFft>> plans_;
   const NoiseProfile* noise_ = nullptr;
   double variance(double lo_hz, double hi_hz) const {
     return noise_ ? std::max(sigma_ * sigma_, noise_->max_variance(lo_hz, hi_hz)) : sigma_ * sigma_;
   }
 };
-
-// Smallest n >= at_least whose only prime factors are 2, 3, 5, 7 (fast FFTW sizes).
-std::size_t nice_fft_size(std::size_t at_least);
 
 }  // namespace ms

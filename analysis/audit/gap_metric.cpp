@@ -1,12 +1,11 @@
 #include "analysis/audit/gap_metric.hpp"
 
-#include <fftw3.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "synthesis/bark.hpp"
+#include "synthesis/fft.hpp"
 
 namespace ms::audit {
 
@@ -62,23 +61,20 @@ BarkSpectrogram bark_spectrogram(const std::vector<float>& x, const SpectrogramG
   s.power.assign(g.frames * g.bands, 0.0);
   if (g.frames == 0) return s;
   const std::size_t bins = g.window / 2 + 1;
-  double* in = fftw_alloc_real(g.window);
-  fftw_complex* out = fftw_alloc_complex(bins);
-  fftw_plan plan = fftw_plan_dft_r2c_1d(int(g.window), in, out, FFTW_ESTIMATE);
+  RealFft fft(g.window);
+  double* in = fft.real();
+  const std::complex<double>* out = fft.spectrum();
   std::vector<double> w(g.window);
   for (std::size_t i = 0; i < g.window; ++i) w[i] = 0.5 - 0.5 * std::cos(2.0 * M_PI * double(i) / double(g.window));
   for (std::size_t f = 0; f < g.frames; ++f) {
     const std::size_t start = f * g.hop;
     for (std::size_t i = 0; i < g.window; ++i)
       in[i] = start + i < x.size() ? w[i] * double(x[start + i]) : 0.0;
-    fftw_execute(plan);
+    fft.forward();
     double* row = &s.power[f * g.bands];
     for (std::size_t k = 1; k < bins; ++k)
-      row[std::size_t(g.bin_band[k])] += out[k][0] * out[k][0] + out[k][1] * out[k][1];
+      row[std::size_t(g.bin_band[k])] += out[k].real() * out[k].real() + out[k].imag() * out[k].imag();
   }
-  fftw_destroy_plan(plan);
-  fftw_free(out);
-  fftw_free(in);
   return s;
 }
 

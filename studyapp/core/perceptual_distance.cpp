@@ -1,14 +1,12 @@
 // perceptual_profile / perceptual_distance_db: 20 ms Hann frames (FFTW), power summed per Bark band.
 #include "studyapp/core/perceptual_distance.hpp"
 
-#include <fftw3.h>
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-#include "studyapp/core/fftw_planner.hpp"
 #include "synthesis/bark.hpp"
+#include "synthesis/fft.hpp"
 
 namespace ms {
 
@@ -22,13 +20,9 @@ PerceptualProfile perceptual_profile(const std::vector<float>& x, double fs) {
   const auto frame = std::max<std::size_t>(16, std::size_t(0.020 * fs));
   std::size_t n = 1;
   while (n < frame) n *= 2;
-  double* in = fftw_alloc_real(n);
-  fftw_complex* out = fftw_alloc_complex(n / 2 + 1);
-  fftw_plan plan;
-  {
-    const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
-    plan = fftw_plan_dft_r2c_1d(int(n), in, out, FFTW_ESTIMATE);
-  }
+  RealFft fft(n);
+  double* in = fft.real();
+  const std::complex<double>* out = fft.spectrum();
   std::vector<std::size_t> band_of(n / 2 + 1);
   for (std::size_t k = 0; k < band_of.size(); ++k)
     band_of[k] = std::min<std::size_t>(kBands - 1, std::size_t(bark_zwicker_terhardt(double(k) * fs / double(n))));
@@ -42,21 +36,16 @@ PerceptualProfile perceptual_profile(const std::vector<float>& x, double fs) {
   for (std::size_t f = 0; f < frames_total; ++f) {
     std::fill(in, in + n, 0.0);
     for (std::size_t i = 0; i < frame; ++i) in[i] = double(x[f * frame + i]) * window[i];
-    fftw_execute(plan);
+    fft.forward();
     std::vector<double> band(kBands, 0.0);
-    for (std::size_t k = 1; k < band_of.size(); ++k) band[band_of[k]] += out[k][0] * out[k][0] + out[k][1] * out[k][1];
+    for (std::size_t k = 1; k < band_of.size(); ++k)
+      band[band_of[k]] += out[k].real() * out[k].real() + out[k].imag() * out[k].imag();
     for (std::size_t b = 0; b < kBands; ++b) {
       whole[b] += band[b];
       broadband[f] += band[b];
       if (f < kEarlyFrames) p.level_db[f * kBands + b] = std::max(kFloorDb, 10.0 * std::log10(band[b] + 1e-300));
     }
   }
-  {
-    const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
-    fftw_destroy_plan(plan);
-  }
-  fftw_free(out);
-  fftw_free(in);
 
   double total = 0.0, weighted = 0.0;
   for (std::size_t b = 0; b < kBands; ++b) {
