@@ -1,4 +1,4 @@
-// The model audit (issue 6): compare a model with recordings of one object, locate the gap, name
+// The model audit: compare a model with recordings of one object, locate the gap, name
 // the missing effects one at a time (detector + cross-validated improvement with a complexity
 // penalty), and show the gap before and after. See README "Auditing a model".
 #pragma once

@@ -214,7 +214,7 @@ TEST(FeatureExtraction, ThoroughLowBandRestartFindsMore) {
   EXPECT_GE(double(run.found + more.found), 0.91 * double(run.eligible + more.eligible));
 }
 
-// The recall bar (issue 3: >= 95 % of the modes within 40 dB of the strongest) on 130 impacts, read
+// The recall bar (>= 95 % of the modes within 40 dB of the strongest) on 130 impacts, read
 // on the issue's own definition of a mode's level (section 2: 10 log10 of its power amp^2 / decay),
 // and measured against what the data support: the maximum-likelihood fit started at the true modes.
 // Read on initial amplitude instead, a mode 39 dB down decaying at 500 1/s carries 69 dB less energy

@@ -1,4 +1,4 @@
-// Response commit latency (issue 5: <= 10 ms): ResultsStore::record_response (WAL, synchronous=FULL,
+// Response commit latency (required: <= 10 ms): ResultsStore::record_response (WAL, synchronous=FULL,
 // prepared statement, one transaction) against a naive open-insert-close per response, in one run.
 // The database lives in $MODALSTUDY_BENCH_DIR or the current folder (not /tmp: tmpfs hides fsync).
 #include <benchmark/benchmark.h>

@@ -1,4 +1,4 @@
-// Issue 5's speed bars for the study app, measured cold (nothing cached):
+// The study app's speed bars, measured cold (nothing cached):
 //  - preparing a 12-stimulus MUSHRA trial (2 s, 200 modes each; reference + 9 conditions + the 3.5
 //    and 7 kHz anchors) through StimulusCache, <= 200 ms; beside it the same 12 stimuli rendered
 //    with the closed-form reference renderer (the naive way to synthesise, double precision);
