@@ -15,6 +15,8 @@ PlaybackMixer::PlaybackMixer(double sample_rate_hz, double crossfade_s)
 void PlaybackMixer::set_stimuli(std::vector<Samples> stimuli) {
   const std::lock_guard<std::mutex> lock(stimuli_mutex_);
   stimuli_ = std::move(stimuli);
+  stop_ = false;  // nothing plays: a stop still pending must not swallow the next play
+  restart_ = false;
   playing_ = false;
   current_ = -1;
   requested_ = -1;
@@ -31,6 +33,7 @@ std::size_t PlaybackMixer::count() const {
 void PlaybackMixer::set_loop(bool loop) { loop_ = loop; }
 
 void PlaybackMixer::play(std::size_t index) {
+  stop_ = false;  // a stop given before this play (same render period) is superseded by it
   restart_ = true;
   requested_ = int(index);
   playing_ = true;
@@ -44,7 +47,10 @@ void PlaybackMixer::switch_to(std::size_t index) {
   requested_ = int(index);
 }
 
-void PlaybackMixer::stop() { stop_ = true; }
+void PlaybackMixer::stop() {
+  requested_ = -1;  // a pending play or switch is cancelled in order, here, not by the audio thread
+  stop_ = true;
+}
 
 std::size_t PlaybackMixer::render(float* out, std::size_t frames) {
   std::fill(out, out + frames, 0.0f);
@@ -52,7 +58,6 @@ std::size_t PlaybackMixer::render(float* out, std::size_t frames) {
   if (!lock.owns_lock()) return 0;  // the stimuli are being replaced: silence this period
   if (stop_.exchange(false)) {
     playing_ = false;
-    requested_ = -1;
     fade_left_ = 0;
     return 0;
   }

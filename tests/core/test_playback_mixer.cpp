@@ -72,3 +72,33 @@ TEST(PlaybackMixer, SwitchWhileStoppedStartsFromZero) {
 
 }  // namespace
 }  // namespace ms
+
+namespace ms {
+namespace {
+
+// The GUI stops the previous trial's sound and a click plays the next one before the audio thread renders
+// again: the play must not be swallowed by the stop.
+TEST(PlaybackMixer, PlayRightAfterStopOrNewStimuliPlays) {
+  PlaybackMixer m(1000.0, 0.005);
+  m.set_stimuli({ramp(100, 1.0f)});
+  m.play(0);
+  std::vector<float> out(10);
+  m.render(out.data(), out.size());
+  m.stop();
+  m.set_stimuli({ramp(100, 2.0f), ramp(100, 3.0f)});
+  m.play(1);
+  EXPECT_EQ(m.render(out.data(), out.size()), 10u);
+  EXPECT_EQ(m.current(), 1);
+  EXPECT_EQ(out[4], 12.0f);  // from the start of stimulus 1
+  m.stop();
+  m.play(0);
+  EXPECT_EQ(m.render(out.data(), out.size()), 10u);
+  EXPECT_EQ(out[4], 8.0f);
+  m.play(1);
+  m.stop();  // stop after a play in the same period: silence
+  EXPECT_EQ(m.render(out.data(), out.size()), 0u);
+  EXPECT_FALSE(m.playing());
+}
+
+}  // namespace
+}  // namespace ms
