@@ -53,9 +53,11 @@ std::string check_answer(const Block& block, const Trial& trial, const nlohmann:
       return object_of(v, trial.stimuli, [](const std::string&, const nlohmann::json& x) {
         return is_number(x) && x.get<double>() >= 0.0 && x.get<double>() <= 100.0;
       }, "a score from 0 to 100");
-    case BlockType::magnitude:
-      if (is_number(v) && v.get<double>() > 0.0) return "";
-      return "expected a positive number, got " + v.dump();
+    case BlockType::magnitude: {
+      const bool zero_allowed = std::get<MagnitudeBlock>(block.body).identical_pairs;  // "no difference"
+      if (is_number(v) && (v.get<double>() > 0.0 || (zero_allowed && v.get<double>() == 0.0))) return "";
+      return (zero_allowed ? "expected a number >= 0, got " : "expected a positive number, got ") + v.dump();
+    }
     case BlockType::identify:
       return one_of(v, std::get<IdentifyBlock>(block.body).labels);
     case BlockType::rating: {

@@ -5,7 +5,7 @@
 //                  (abx: the one that is X); bipolar: integer -3..3 (B compared with A; with a
 //                  block reference: positive when B is closer to the reference)
 //   mushra         {"<stimulus>": 0..100, ...} for every stimulus of the trial (hidden reference too)
-//   magnitude      number > 0 (the pair's dissimilarity, the modulus pair being 100)
+//   magnitude      number > 0 (the pair's dissimilarity, the modulus pair being 100); >= 0 with identical pairs
 //   identify       one of the block's labels
 //   rating         {"<attribute>": 1..points, ...} for every attribute
 //   adjust         {"<key>": value within the slider's range, ...} for every slider
