@@ -14,6 +14,7 @@ struct FileLimit {
 
 inline constexpr std::uint64_t kMiB = 1024 * 1024;
 inline constexpr FileLimit kYamlFileLimit{"YAML file", 16 * kMiB};    // parameter sets, protocols
+inline constexpr FileLimit kJsonFileLimit{"JSON file", 16 * kMiB};    // stimuli build's manifest
 inline constexpr FileLimit kCsvFileLimit{"CSV file", 256 * kMiB};     // modes, features, tidy data
 inline constexpr FileLimit kAudioFileLimit{"audio file", 2048 * kMiB}; // recordings, rendered stimuli
 // Decoded audio: at most this many samples (frames x channels), 1 GiB as float; a compressed file

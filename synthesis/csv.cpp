@@ -1,9 +1,8 @@
 #include "synthesis/csv.hpp"
 
 #include <charconv>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
+
+#include "synthesis/bounded_file.hpp"
 
 namespace ms::csv {
 
@@ -128,16 +127,7 @@ std::vector<Record> parse(std::string_view text, const std::string& file) {
   return out;
 }
 
-std::string read_file(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(SourceLocation{path, 0, 0}, "no such file");
-  if (std::filesystem::is_directory(path, ec)) throw InputError(SourceLocation{path, 0, 0}, "is a folder, not a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(SourceLocation{path, 0, 0}, "cannot read file");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
+std::string read_file(const std::string& path) { return read_bounded_file(path, kCsvFileLimit); }
 
 bool is_number(std::string_view s) {
   std::size_t i = 0;

@@ -23,7 +23,8 @@ struct Record {
 // Throws InputError at file:line:column for an unterminated quote or text after a closing quote.
 std::vector<Record> parse(std::string_view text, const std::string& file);
 
-// The whole file as bytes; InputError "no such file" / "cannot read file" naming `path`.
+// The whole file as bytes, through the bounded reader (regular files of at most 256 MiB); InputError
+// "no such file", "is a FIFO ...", "is ... more than the 256 MiB a CSV file may have" naming `path`.
 std::string read_file(const std::string& path);
 
 // True when `s` is entirely a decimal number: [+-]digits[.digits][e[+-]digits] (no inf, nan, hex).

@@ -26,16 +26,18 @@ ModalModel parse_modes_csv(const std::string& text, const std::string& file,
   }
   for (auto [col, name] : {std::pair{col_f, "freq_hz"}, {col_d, "decay_per_s"}, {col_a, "amp"}})
     if (col < 0)
-      throw InputError(SourceLocation{file, head.where.front().line, 0},
-                       std::string("missing column '") + name + "' (need freq_hz,decay_per_s,amp)");
+      throw InputError(head.where.front(), std::string("missing column '") + name + "' (need freq_hz,decay_per_s,amp)");
   ModalModel model;
   for (std::size_t r = 1; r < records.size(); ++r) {
     const csv::Record& rec = records[r];
     const auto& cells = rec.cells;
-    if (cells.size() != header.size())
-      throw InputError(SourceLocation{file, rec.where.front().line, 0},
-                       "expected " + std::to_string(header.size()) + " cells, got " +
-                           std::to_string(cells.size()));
+    // At the first cell too many, or at the last cell of a row that ends early (naming what is missing).
+    if (cells.size() > header.size())
+      throw InputError(rec.where[header.size()], "expected " + std::to_string(header.size()) + " cells, got " +
+                                                     std::to_string(cells.size()));
+    if (cells.size() < header.size())
+      throw InputError(rec.where.back(), "expected " + std::to_string(header.size()) + " cells, got " +
+                                             std::to_string(cells.size()) + " (no '" + header[cells.size()] + "')");
     auto value = [&](int col, const char* name) {
       const std::string& s = cells[std::size_t(col)];
       const char* first = s.data();

@@ -13,6 +13,7 @@
 
 #include "synthesis/atomic_file.hpp"
 #include "synthesis/audio_file.hpp"
+#include "synthesis/bounded_file.hpp"
 #include "synthesis/input_error.hpp"
 #include "synthesis/paramset.hpp"
 #include "synthesis/sha256.hpp"
@@ -60,10 +61,10 @@ std::vector<Job> collect(const std::vector<std::string>& inputs) {
 
 std::map<std::string, nlohmann::json> read_manifest(const fs::path& path) {
   std::map<std::string, nlohmann::json> by_name;
-  std::ifstream in(path);
-  if (!in) return by_name;
+  std::error_code ec;
+  if (!fs::exists(path, ec)) return by_name;
   try {
-    const nlohmann::json j = nlohmann::json::parse(in);
+    const nlohmann::json j = nlohmann::json::parse(read_bounded_file(path.string(), kJsonFileLimit));
     for (const auto& e : j.at("stimuli")) by_name[e.at("name").get<std::string>()] = e;
   } catch (const std::exception&) {
     by_name.clear();  // a damaged manifest only costs a full re-render

@@ -18,6 +18,7 @@
 #include "synthesis/bounded_file.hpp"
 #include "synthesis/effects.hpp"
 #include "synthesis/input_error.hpp"
+#include "synthesis/modes_csv.hpp"
 #include "synthesis/paramset.hpp"
 #include "synthesis/path_confinement.hpp"
 #include "synthesis/stimulus.hpp"
@@ -275,4 +276,13 @@ TEST(StudyIds, OnlyIdentifiersNameFiles) {
   for (const char* bad : {"", "../../../x", "a/b", ".hidden", "-x", "a b", "x\\y", "..", "\xc3\xa9t\xc3\xa9"})
     EXPECT_FALSE(is_identifier(bad)) << bad;
   EXPECT_FALSE(is_identifier(std::string(65, 'a')));
+}
+
+TEST(ModesCsvMessages, RaggedRowsAndMissingColumnsNameAColumn) {
+  EXPECT_EQ(error_of([] { parse_modes_csv("freq_hz,decay_per_s,amp\n440,3\n", "m.csv"); }),
+            "m.csv:2:5: expected 3 cells, got 2 (no 'amp')");
+  EXPECT_EQ(error_of([] { parse_modes_csv("freq_hz,decay_per_s,amp\n440,3,1,9\n", "m.csv"); }),
+            "m.csv:2:9: expected 3 cells, got 4");
+  EXPECT_EQ(error_of([] { parse_modes_csv("freq_hz,amp\n440,1\n", "m.csv"); }),
+            "m.csv:1:1: missing column 'decay_per_s' (need freq_hz,decay_per_s,amp)");
 }
