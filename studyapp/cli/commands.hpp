@@ -17,5 +17,6 @@ void register_export(CLI::App& app);
 void register_protocol(CLI::App& app);
 void register_audit(CLI::App& app);
 void register_audit_generate(CLI::App& app);
+void register_compare(CLI::App& app);
 
 }  // namespace ms::cli

@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   ms::cli::register_protocol(app);
   ms::cli::register_audit(app);
   ms::cli::register_audit_generate(app);
+  ms::cli::register_compare(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -104,5 +104,7 @@ namespace ms::plots {
 // both, drawn grey) over [0, duration_s], diverging colours saturating at +-limit_db, with a colour bar.
 void residual_map(const std::string& path, const std::vector<std::vector<double>>& diff_db_by_band,
                   double duration_s, double limit_db, const PlotOptions& options);
+// 8. Loudness image sone_by_band[band][frame] (bands of band_bark Bark, frames hop_s apart); difference: a signed difference on a diverging scale.
+void loudness_image(const std::string& path, const std::vector<std::vector<double>>& sone_by_band, double hop_s, double band_bark, bool difference, const PlotOptions& options);
 
 }  // namespace ms::plots
