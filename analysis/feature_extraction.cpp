@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <complex>
 #include <numbers>
 
@@ -159,8 +160,11 @@ std::optional<std::string> recording_problem(const std::vector<float>& samples, 
   }
   if (top == 0.0f && bottom == 0.0f) return "silent: every sample is zero";
   // A constant (DC) signal sits at its own extremes everywhere without having been clipped.
-  if (std::all_of(samples.begin(), samples.end(), [&](float v) { return v == samples.front(); }))
-    return "constant: every sample is " + std::to_string(samples.front()) + " (no impact in it)";
+  if (std::all_of(samples.begin(), samples.end(), [&](float v) { return v == samples.front(); })) {
+    char value[32];
+    std::snprintf(value, sizeof value, "%.6g", double(samples.front()));
+    return "constant: every sample is " + std::string(value) + " (no impact in it)";
+  }
   // Clipping: runs of 3+ consecutive samples pinned at either rail, over 0.1 % of the recording.
   std::size_t pinned = 0, run = 0;
   float rail_prev = 0.0f;

@@ -34,7 +34,12 @@ void register_extract(CLI::App& app) {
   cmd->add_option("wav", opt->inputs, "Recordings (WAV/FLAC/AIFF)")->required();
   CLI::Option* output = cmd->add_option("-o,--output", opt->output, "Write FEATURES.csv (sound,freq_hz,decay_per_s,amp)");
   cmd->add_option("--channel", opt->channel, "0-based channel to analyse (default: mix to mono)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Validator(
+          [](std::string& v) {
+            return v.rfind('-', 0) == 0 ? std::string("must be 0 or more (0-based; leave --channel out to mix to mono)")
+                                        : std::string();
+          },
+          "N >= 0"));
   cmd->add_option("--skip-contact-ms", opt->skip_contact_ms,
                   "Start fitting this long after the onset (the strike's contact is not modal); "
                   "amplitudes are extrapolated back to the onset (default 0.5; 0 for ideal impulses)")
