@@ -35,8 +35,10 @@ Iso226Row iso226_parameters(double freq_hz);
 // Eq. (1): SPL [dB] of a pure tone at `row`'s frequency with loudness level loudness_phon.
 double iso226_spl_db(const Iso226Row& row, double loudness_phon);
 
-// Eq. (2): loudness level [phon] of a pure tone of spl_db at `row`'s frequency; -infinity where
-// B_f <= 0 (far below the threshold of hearing, where the formula has no value).
+// Eq. (2): loudness level [phon] of a pure tone of spl_db at `row`'s frequency. Far below the
+// threshold it goes negative (0 sone); -infinity would mean B_f <= 0, which no row of Table 1 reaches
+// (their T_f terms all stay under 0.005135). Eq. (2) inverts Eq. (1) to 0.06 phon (the standard
+// rounds their constants separately).
 double iso226_loudness_phon(const Iso226Row& row, double spl_db);
 
 // Loudness [sone] of a loudness level [phon]: 2^((L_N - 40)/10) from 40 phon up (1 sone at 40 phon,

@@ -117,10 +117,13 @@ TEST_F(CompareCli, LevelAndFrequencyChangesScoreHigher) {
   const double p4 = compare_json(a, much_quieter, "--metric image")["image"]["psycho"].get<double>();
   EXPECT_GT(p2, 0.0);
   EXPECT_GT(p4, p2);
-  // A level change leaves the modes where they were: the match stays all but perfect.
-  EXPECT_NEAR(compare_json(a, quieter, "--metric feature")["feature"]["mrp"].get<double>(), -1.0, 1e-3);
+  // A level change leaves the modes where they were: the match stays near perfect (the quieter
+  // recording's extra weak modes near the true ones pull the per-point means down a little); 4 % higher
+  // modes lie ~1 point-distance away and match far worse.
+  const double mrp_quieter = compare_json(a, quieter, "--metric feature")["feature"]["mrp"].get<double>();
+  EXPECT_LT(mrp_quieter, -0.9);
   const nlohmann::json h = compare_json(a, higher);
-  EXPECT_GT(h["feature"]["mrp"].get<double>(), -1.0);
+  EXPECT_GT(h["feature"]["mrp"].get<double>(), -0.8);
   EXPECT_GT(h["image"]["psycho"].get<double>(), 0.0);
   EXPECT_NEAR(h["hybrid"].get<double>(), h["image"]["psycho"].get<double>() / -h["feature"]["mrp"].get<double>(),
               1e-9 * h["hybrid"].get<double>());
