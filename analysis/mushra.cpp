@@ -24,6 +24,7 @@ MushraStat describe(const std::string& name, const std::vector<double>& values, 
   const double half = t * s.sd / std::sqrt(double(s.n));
   s.ci_low = s.mean - half;
   s.ci_high = s.mean + half;
+  s.ci_past_scale = *s.ci_low < 0.0 || *s.ci_high > 100.0;
   return s;
 }
 

@@ -8,6 +8,8 @@
 // Statistics (BS.1534-3 §9.2): for each condition over the N ratings of the included assessors,
 //   mean = (1/N) sum u_i, s = sqrt(sum (u_i - mean)^2 / (N - 1)),
 //   CI = mean +- t_{N-1, (1+level)/2} s / sqrt(N);
+// the interval is reported as computed even where it passes the 0..100 scale (clipping it would
+// change its coverage and hide how wide it is); such intervals are marked (ci_past_scale).
 // per item the same over the included assessors. Repeated ratings of one assessor, item and
 // condition are first averaged (one rating per assessor, item and condition).
 #pragma once
@@ -50,7 +52,8 @@ struct MushraStat {
   std::string condition;
   std::size_t n = 0;
   double mean = 0, sd = 0;
-  std::optional<double> ci_low, ci_high;  // need n >= 2
+  std::optional<double> ci_low, ci_high;  // need n >= 2; as computed, never clipped to the scale
+  bool ci_past_scale = false;             // the interval reaches below 0 or above 100 (printed marked)
 };
 
 struct MushraItem {

@@ -6,6 +6,7 @@
 #include <boost/math/distributions/fisher_f.hpp>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace ms {
 
@@ -84,6 +85,11 @@ Eigen::RowVectorXd sum_code(std::size_t levels, int level) {
 
 RmAnova rm_anova(const RmData& data) {
   const Eigen::Index n = data.cell_mean.rows();
+  // Cell means scaled by a power of two near the largest |mean|: exact, and squares of values like
+  // 1e300 stay finite (F, p, epsilons and effect sizes do not depend on it; SS are scaled back).
+  const double max_abs = data.cell_mean.size() ? data.cell_mean.cwiseAbs().maxCoeff() : 0.0;
+  const double scale = max_abs > 0 && std::isfinite(max_abs) ? std::ldexp(1.0, std::ilogb(max_abs)) : 1.0;
+  const Eigen::MatrixXd y = data.cell_mean / scale;
   const auto within_terms = factorial_terms(data.within.size());
   const auto between_terms = factorial_terms(data.between.size());
 
@@ -122,7 +128,7 @@ RmAnova rm_anova(const RmData& data) {
   for (unsigned w : within_terms) {
     const Eigen::MatrixXd m = within_contrasts(data.within, w);
     const Eigen::Index q = m.cols();
-    const Eigen::MatrixXd z = data.cell_mean * m;
+    const Eigen::MatrixXd z = y * m;
     const Eigen::MatrixXd b = xtx_inv * (x.transpose() * z);
     const Eigen::MatrixXd resid = z - x * b;
     const Eigen::MatrixXd e = resid.transpose() * resid;
@@ -137,7 +143,9 @@ RmAnova rm_anova(const RmData& data) {
       eps_gg = gg;
       eps_hf = ((df_e + 1) * qd * gg - 2) / (qd * (df_e - qd * gg));
       if (q > 1 && df_e >= qd) {
-        const double log_w = std::log(e.determinant()) - qd * std::log(ss_err / qd);
+        // A singular E (rank below q) has W = 0.
+        const double det = e.determinant();
+        const double log_w = det > 0 ? std::log(det) - qd * std::log(ss_err / qd) : -std::numeric_limits<double>::infinity();
         const double rho = 1 - (2 * qd * qd + qd + 2) / (6 * qd * df_e);
         // R (stats::mauchly.test and car) writes 3p with p = the number of cells here, not q.
         const double cells = double(m.rows());
@@ -163,7 +171,11 @@ RmAnova rm_anova(const RmData& data) {
       eff.df2 = double(q) * df_e;
       eff.ss = ss;
       eff.ss_error = ss_err;
-      eff.F = ss_err > 0 ? (ss / eff.df1) / (ss_err / eff.df2) : std::numeric_limits<double>::infinity();
+      // No error variance (within rounding, as car::Anova refuses it): F would be infinite or 0/0.
+      if (!(ss_err > 1e-10 * (ss + ss_err)))
+        throw std::domain_error("effect " + eff.name + ": the error sum of squares is 0 (every subject shows the same "
+                                "values up to a constant): F is undefined");
+      eff.F = (ss / eff.df1) / (ss_err / eff.df2);
       eff.p = f_upper_p(eff.F, eff.df1, eff.df2);
       eff.pes = ss / (ss + ss_err);
       eff.eps_gg = eps_gg;
@@ -176,7 +188,14 @@ RmAnova rm_anova(const RmData& data) {
       out.effects.push_back(eff);
     }
   }
-  for (auto& eff : out.effects) eff.ges = eff.ss / (eff.ss + error_ss_all_strata);
+  for (auto& eff : out.effects) {
+    eff.ges = eff.ss / (eff.ss + error_ss_all_strata);
+    eff.ss *= scale * scale;
+    eff.ss_error *= scale * scale;
+    if (!std::isfinite(eff.ss) || !std::isfinite(eff.ss_error))
+      throw std::domain_error("effect " + eff.name + ": its sums of squares exceed the range of double precision "
+                              "(rescale the dependent variable)");
+  }
   return out;
 }
 

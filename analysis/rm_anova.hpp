@@ -30,6 +30,9 @@
 //   generalised eta^2 (Olejnik & Algina 2003; Bakeman 2005), all factors manipulated:
 //     ges = SS / (SS + sum of the error SS of every stratum (subjects and every within term))
 //   partial eta^2  pes = SS / (SS + SS_err).
+// Cell means are scaled by a power of two first (exact; values like 1e300 work). An effect whose error
+// SS is 0 within rounding (SS_err <= 1e-10 (SS + SS_err): F infinite or 0/0), or whose SS exceed the
+// double range, throws std::domain_error naming the effect.
 #pragma once
 #include <optional>
 #include <string>

@@ -6,6 +6,9 @@
 //            df = se^4 / ((s_x^2/n_x)^2/(n_x-1) + (s_y^2/n_y)^2/(n_y-1))   (Welch 1947; Satterthwaite)
 //   Student: s_p^2 = ((n_x-1)s_x^2 + (n_y-1)s_y^2)/(n_x+n_y-2), se^2 = s_p^2 (1/n_x + 1/n_y), df = n_x+n_y-2
 //   p = 2 P(T_df > |t|); CI = diff +- t_{df,(1+level)/2} se.
+// Values are scaled by a power of two near the largest |value| first, so data like 1e300 give exact
+// results. Constant data (se = 0, where t is 0/0 or infinite) and results beyond the double range
+// throw std::domain_error, as R's t.test refuses "data are essentially constant".
 #pragma once
 #include <vector>
 

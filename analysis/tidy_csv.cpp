@@ -39,6 +39,18 @@ TidyCsv TidyCsv::parse(const std::string& text, const std::string& file) {
 
 TidyCsv TidyCsv::read(const std::string& path) { return parse(csv::read_file(path), path); }
 
+TidyCsv TidyCsv::keep_rows(const std::vector<std::size_t>& rows) const {
+  TidyCsv t;
+  t.file_ = file_;
+  t.header_ = header_;
+  t.header_line_ = header_line_;
+  for (std::size_t r : rows) {
+    t.cells_.push_back(cells_.at(r));
+    t.positions_.push_back(positions_.at(r));
+  }
+  return t;
+}
+
 bool TidyCsv::has_column(const std::string& name) const {
   for (const auto& h : header_)
     if (h == name) return true;

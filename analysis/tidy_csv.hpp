@@ -37,6 +37,9 @@ class TidyCsv {
   // Where a row starts.
   SourceLocation where(std::size_t row) const { return where(row, 0); }
 
+  // The same table with only `rows` (in that order); cells keep their file positions.
+  TidyCsv keep_rows(const std::vector<std::size_t>& rows) const;
+
  private:
   std::string file_;
   std::vector<std::string> header_;

@@ -115,12 +115,15 @@ struct PlateShape {
 
 std::vector<double> free_plate_roots(int n, double poisson, double k_max) {
   PlateEquation eq{n, poisson};
+  auto resolved = [n](double k) { return std::max(std::abs(bessel_j(n, k)), std::abs(bessel_j_prime(n, k))) > 1e-100; };
   std::vector<double> roots;
   const double step = 0.1;  // roots of one order are ~pi apart
   double k0 = 0.5, g0 = eq(k0);
   for (double k1 = k0 + step; k1 <= k_max + step; k1 += step) {
     const double g1 = eq(k1);
-    if ((g0 < 0) != (g1 < 0)) {
+    // At high orders and small k, J_n and J_n' underflow (J_150(0.8) ~ 1e-320) and the equation is
+    // rounding noise (or 0/0): its sign changes there are no roots (they lie above k = n).
+    if (std::isfinite(g0) && std::isfinite(g1) && (g0 < 0) != (g1 < 0) && resolved(k0) && resolved(k1)) {
       const double r = bracketed_root(eq, k0, k1);
       if (r <= k_max) roots.push_back(r);
     }

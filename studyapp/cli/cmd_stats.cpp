@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <map>
 #include <set>
+#include <stdexcept>
 #include <optional>
 
 #include "analysis/binomial_test.hpp"
@@ -30,6 +31,7 @@
 #include "analysis/t_test.hpp"
 #include "analysis/tidy_csv.hpp"
 #include "studyapp/cli/commands.hpp"
+#include "studyapp/cli/stats_input.hpp"
 #include "synthesis/atomic_file.hpp"
 #include "synthesis/csv.hpp"
 #include "synthesis/input_error.hpp"
@@ -73,6 +75,16 @@ std::string fmt_p(double p) {
   return fmt("%.3g", p);
 }
 
+// A statistic the data do not define (std::domain_error from the library) as one line naming the file.
+template <class F>
+auto located(const std::string& file, const std::string& what, F&& compute) {
+  try {
+    return compute();
+  } catch (const std::domain_error& e) {
+    throw InputError(SourceLocation{file, 0, 0}, what + ": " + e.what());
+  }
+}
+
 void print_notices(const std::vector<std::string>& notices, const std::string& file) {
   for (const auto& n : notices) std::cerr << "notice: " << file << ": " << n << "\n";
 }
@@ -86,18 +98,20 @@ void register_anova(CLI::App& group) {
   auto opt = std::make_shared<Options>();
   CLI::App* cmd = group.add_subcommand(
       "anova", "Repeated-measures ANOVA (type III; GG/HF corrections, Mauchly, ges/pes), as afex::aov_ez");
+  auto in = std::make_shared<StatsInput>();
+  add_input_options(cmd, *in);
   cmd->add_option("data", opt->data, "Tidy CSV, one row per observation")->required();
   cmd->add_option("--dv", opt->dv, "Column of the dependent variable (numeric)")->required();
   cmd->add_option("--subject", opt->subject, "Column identifying the subject (listener)")->required();
   cmd->add_option("--within", opt->within, "Within-subject factor columns, comma separated")->required();
   cmd->add_option("--between", opt->between, "Between-subject factor column(s)");
   cmd->add_flag("--json", opt->json, "Print one JSON object");
-  cmd->callback([opt] {
-    const TidyCsv table = TidyCsv::read(opt->data);
+  cmd->callback([opt, in] {
+    const TidyCsv table = read_stats_table(opt->data, *in);
     std::vector<std::string> notices;
     const RmData data = rm_data_from_table(
         table, RmColumns{opt->dv, opt->subject, split_commas(opt->within), split_commas(opt->between)}, notices);
-    const RmAnova a = rm_anova(data);
+    const RmAnova a = located(opt->data, "column '" + opt->dv + "'", [&] { return rm_anova(data); });
     print_notices(notices, opt->data);
     if (opt->json) {
       nlohmann::json effects = nlohmann::json::array();
@@ -139,6 +153,8 @@ void register_ttest(CLI::App& group) {
   };
   auto opt = std::make_shared<Options>();
   CLI::App* cmd = group.add_subcommand("ttest", "Two-sample t-test: Welch (default), Student or paired, as R's t.test");
+  auto in = std::make_shared<StatsInput>();
+  add_input_options(cmd, *in);
   cmd->add_option("data", opt->data, "Tidy CSV, one row per observation")->required();
   cmd->add_option("--dv", opt->dv, "Column of the dependent variable")->required();
   cmd->add_option("--group", opt->group_col, "Column with exactly two levels; the difference is first - second "
@@ -148,8 +164,8 @@ void register_ttest(CLI::App& group) {
   cmd->add_flag("--student", opt->student, "Pooled-variance (Student) test instead of Welch");
   cmd->add_option("--conf-level", opt->conf_level, "Confidence level of the interval")->check(CLI::Range(0.5, 0.9999));
   cmd->add_flag("--json", opt->json, "Print one JSON object");
-  cmd->callback([opt] {
-    const TidyCsv table = TidyCsv::read(opt->data);
+  cmd->callback([opt, in] {
+    const TidyCsv table = read_stats_table(opt->data, *in);
     const std::size_t col_dv = table.column(opt->dv), col_g = table.column(opt->group_col);
     if (opt->paired && opt->subject.empty()) throw InputError(SourceLocation{}, "--paired needs --subject COL");
     const std::size_t col_s = opt->paired ? table.column(opt->subject) : 0;
@@ -204,13 +220,15 @@ void register_ttest(CLI::App& group) {
       }
       if (averaged) notices.push_back("more than one observation per subject and level; aggregating with the mean");
       if (subjects.size() < 2) throw InputError(table.where(0, col_s), "a paired t-test needs at least two subjects");
-      t = paired_t_test(values[0], values[1], opt->conf_level);
+      t = located(opt->data, "column '" + opt->dv + "'", [&] { return paired_t_test(values[0], values[1], opt->conf_level); });
     } else {
       for (int k = 0; k < 2; ++k)
         if (values[std::size_t(k)].size() < 2)
           throw InputError(table.where(0, col_g), "level '" + levels[std::size_t(k)] + "' has fewer than two observations");
-      t = opt->student ? student_t_test(values[0], values[1], opt->conf_level)
-                       : welch_t_test(values[0], values[1], opt->conf_level);
+      t = located(opt->data, "column '" + opt->dv + "'", [&] {
+        return opt->student ? student_t_test(values[0], values[1], opt->conf_level)
+                            : welch_t_test(values[0], values[1], opt->conf_level);
+      });
     }
     print_notices(notices, opt->data);
     const std::string method = opt->paired ? "paired" : opt->student ? "student" : "welch";
@@ -237,8 +255,8 @@ struct Responses {
 };
 
 Responses read_responses(const std::string& path, const std::string& truth_col, const std::string& response_col,
-                         const std::vector<std::string>& labels) {
-  const TidyCsv table = TidyCsv::read(path);
+                         const std::vector<std::string>& labels, const StatsInput& in) {
+  const TidyCsv table = read_stats_table(path, in);
   const std::size_t ct = table.column(truth_col), cr = table.column(response_col);
   if (table.rows() == 0) throw InputError(SourceLocation{table.file(), 0, 0}, "no data rows");
   Responses r;
@@ -300,6 +318,8 @@ void register_confusion(CLI::App& group) {
   auto opt = std::make_shared<Options>();
   CLI::App* cmd = group.add_subcommand(
       "confusion", "Confusion matrix of an identification task: percent, accuracy, kappa, chi-square; --compare two");
+  auto in = std::make_shared<StatsInput>();
+  add_input_options(cmd, *in);
   cmd->add_option("data", opt->data, "Tidy CSV, one row per response")->required();
   cmd->add_option("--truth", opt->truth, "Column of the presented class")->required();
   cmd->add_option("--response", opt->response, "Column of the answered class")->required();
@@ -309,15 +329,15 @@ void register_confusion(CLI::App& group) {
       ->check(CLI::Range(0.5, 0.9999));
   cmd->add_option("--plot", opt->plot, "Also draw the (first) matrix as a heat map: FILE.png or FILE.svg");
   cmd->add_flag("--json", opt->json, "Print one JSON object");
-  cmd->callback([opt] {
+  cmd->callback([opt, in] {
     if (!opt->plot.empty()) plots::check_output_path(opt->plot);
     std::vector<std::string> labels = split_commas(opt->labels);
     for (std::size_t i = 0; i < labels.size(); ++i)
       for (std::size_t k = 0; k < i; ++k)
         if (labels[i] == labels[k]) throw InputError(SourceLocation{}, "--labels: '" + labels[i] + "' listed twice");
-    const Responses a = read_responses(opt->data, opt->truth, opt->response, labels);
+    const Responses a = read_responses(opt->data, opt->truth, opt->response, labels, *in);
     Responses b;
-    if (!opt->compare.empty()) b = read_responses(opt->compare, opt->truth, opt->response, labels);
+    if (!opt->compare.empty()) b = read_responses(opt->compare, opt->truth, opt->response, labels, *in);
     if (labels.empty()) {
       std::set<std::string> all;
       for (const Responses* r : {&a, static_cast<const Responses*>(&b)}) {
@@ -391,7 +411,15 @@ std::size_t pick_column(const TidyCsv& table, const std::string& chosen, const s
 
 nlohmann::json stat_json(const MushraStat& s) {
   return {{"condition", s.condition}, {"n", s.n}, {"mean", s.mean}, {"sd", s.n >= 2 ? nlohmann::json(s.sd) : nullptr},
-          {"ci_low", opt_json(s.ci_low)}, {"ci_high", opt_json(s.ci_high)}};
+          {"ci_low", opt_json(s.ci_low)}, {"ci_high", opt_json(s.ci_high)}, {"ci_past_scale", s.ci_past_scale}};
+}
+
+// "[ 61.20,  98.40]", "[ 80.10, 104.36]*" past the 0-100 scale, "NA" without an interval (n < 2).
+std::string mushra_ci(const MushraStat& s) {
+  if (!s.ci_low || !s.ci_high) return "NA";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "[%6.2f, %6.2f]%s", *s.ci_low, *s.ci_high, s.ci_past_scale ? "*" : "");
+  return buf;
 }
 
 void register_mushra(CLI::App& group) {
@@ -403,6 +431,8 @@ void register_mushra(CLI::App& group) {
   auto opt = std::make_shared<Options>();
   CLI::App* cmd = group.add_subcommand(
       "mushra", "MUSHRA (ITU-R BS.1534-3): post-screening of assessors, means and 95% CIs per condition and item");
+  auto in = std::make_shared<StatsInput>();
+  add_input_options(cmd, *in);
   cmd->add_option("data", opt->data, "Tidy CSV, one row per rating (webMUSHRA column names accepted)")->required();
   cmd->add_option("--subject", opt->subject, "Assessor column (default: participant, subject or session_uuid)");
   cmd->add_option("--item", opt->item, "Item column (default: trial, item or trial_id)");
@@ -415,9 +445,9 @@ void register_mushra(CLI::App& group) {
   cmd->add_option("--conf-level", opt->m.conf_level, "Confidence level")->check(CLI::Range(0.5, 0.9999));
   cmd->add_option("--plot", opt->plot, "Also draw box plots with means and CIs: FILE.png or FILE.svg");
   cmd->add_flag("--json", opt->json, "Print one JSON object");
-  cmd->callback([opt] {
+  cmd->callback([opt, in] {
     if (!opt->plot.empty()) plots::check_output_path(opt->plot);
-    const TidyCsv table = TidyCsv::read(opt->data);
+    const TidyCsv table = read_stats_table(opt->data, *in);
     const std::size_t cs = pick_column(table, opt->subject, {"participant", "subject", "session_uuid"});
     const std::size_t ci = pick_column(table, opt->item, {"trial", "item", "trial_id"});
     const std::size_t cc = pick_column(table, opt->condition, {"condition", "rating_stimulus"});
@@ -476,6 +506,13 @@ void register_mushra(CLI::App& group) {
       notices.push_back(std::to_string(res.averaged) +
                         " assessor/item/condition cells were rated more than once; their ratings are averaged");
     if (res.included == 0) notices.push_back("every assessor was excluded by post-screening; no statistics");
+    std::size_t past = 0;
+    for (const auto& c : res.conditions) past += c.ci_past_scale;
+    for (const auto& it : res.items)
+      for (const auto& c : it.conditions) past += c.ci_past_scale;
+    if (past)
+      notices.push_back(std::to_string(past) + " confidence interval(s) pass the 0-100 scale; reported as computed "
+                        "(t interval, not clipped) and marked *");
     print_notices(notices, opt->data);
     if (opt->json) {
       nlohmann::json assessors = nlohmann::json::array(), conds = nlohmann::json::array(), items = nlohmann::json::array();
@@ -521,15 +558,16 @@ void register_mushra(CLI::App& group) {
     }
     std::printf("\n%-16s %5s %8s %8s %17s\n", "Condition", "n", "mean", "sd", "95% CI");
     for (const auto& c : res.conditions)
-      std::printf("%-16s %5zu %8.2f %8.2f   [%6.2f, %6.2f]\n", c.condition.c_str(), c.n, c.mean, c.sd,
-                  c.ci_low.value_or(NAN), c.ci_high.value_or(NAN));
+      std::printf("%-16s %5zu %8s %8s   %s\n", c.condition.c_str(), c.n, c.n ? fmt("%.2f", c.mean).c_str() : "NA",
+                  c.n >= 2 ? fmt("%.2f", c.sd).c_str() : "NA", mushra_ci(c).c_str());
     std::printf("\nPer item (mean [95%% CI])\n");
     for (const auto& it : res.items) {
       std::printf("%s\n", it.item.c_str());
       for (const auto& c : it.conditions)
-        std::printf("  %-14s %7.2f [%6.2f, %6.2f]\n", c.condition.c_str(), c.mean, c.ci_low.value_or(NAN),
-                    c.ci_high.value_or(NAN));
+        std::printf("  %-14s %7s %s\n", c.condition.c_str(), c.n ? fmt("%.2f", c.mean).c_str() : "NA",
+                    mushra_ci(c).c_str());
     }
+    if (past) std::printf("* the interval passes the 0-100 scale (reported as computed, not clipped)\n");
   });
 }
 
@@ -573,6 +611,8 @@ void register_ab(CLI::App& group) {
   auto opt = std::make_shared<Options>();
   CLI::App* cmd = group.add_subcommand(
       "ab", "A/B blocks: proportion correct, exact binomial test, d' (2AFC, ABX, yes-no, same-different), preference");
+  auto in = std::make_shared<StatsInput>();
+  add_input_options(cmd, *in);
   cmd->add_option("data", opt->data, "Tidy CSV, one row per trial")->required();
   cmd->add_option("--task", opt->task, "2afc | abx | yesno | same-different | preference")
       ->check(CLI::IsMember({"2afc", "abx", "yesno", "same-different", "preference"}))
@@ -589,8 +629,8 @@ void register_ab(CLI::App& group) {
   cmd->add_option("--chance", opt->chance, "Chance proportion for 2afc/abx")->check(CLI::Range(0.0, 1.0));
   cmd->add_option("--conf-level", opt->conf_level, "Confidence level")->check(CLI::Range(0.5, 0.9999));
   cmd->add_flag("--json", opt->json, "Print one JSON object");
-  cmd->callback([opt] {
-    const TidyCsv table = TidyCsv::read(opt->data);
+  cmd->callback([opt, in] {
+    const TidyCsv table = read_stats_table(opt->data, *in);
     if (table.rows() == 0) throw InputError(SourceLocation{table.file(), 0, 0}, "no data rows");
     auto need = [&](const std::string& v, const char* flag) {
       if (v.empty()) throw InputError(SourceLocation{}, "--task " + opt->task + " needs " + flag + " COL");
@@ -713,6 +753,8 @@ void register_staircase(CLI::App& group) {
   auto opt = std::make_shared<Options>();
   CLI::App* cmd = group.add_subcommand(
       "staircase", "Adaptive-staircase thresholds per track: mean reversal level after the first two (as the protocol's)");
+  auto in = std::make_shared<StatsInput>();
+  add_input_options(cmd, *in);
   cmd->add_option("data", opt->data, "Tidy CSV, one row per trial")->required();
   cmd->add_option("--level", opt->level, "Column of the stimulus level presented")->required();
   cmd->add_option("--track", opt->track, "Column(s) identifying a track (e.g. participant, staircase)");
@@ -726,8 +768,8 @@ void register_staircase(CLI::App& group) {
       ->check(CLI::Range(1, 1000));
   cmd->add_flag("--log", opt->log_scale, "Geometric mean (levels on a ratio scale)");
   cmd->add_flag("--json", opt->json, "Print one JSON object");
-  cmd->callback([opt] {
-    const TidyCsv table = TidyCsv::read(opt->data);
+  cmd->callback([opt, in] {
+    const TidyCsv table = read_stats_table(opt->data, *in);
     const std::size_t cl = table.column(opt->level);
     const std::size_t ct = opt->trial.empty() ? 0 : table.column(opt->trial);
     const bool has_next = table.has_column(opt->next_level);
@@ -800,6 +842,8 @@ void register_mds(CLI::App& group) {
   };
   auto opt = std::make_shared<Options>();
   CLI::App* cmd = group.add_subcommand("mds", "Multidimensional scaling of dissimilarities: classical, SMACOF, nonmetric");
+  auto in = std::make_shared<StatsInput>();
+  add_input_options(cmd, *in);
   cmd->add_option("data", opt->data, "Square dissimilarity matrix CSV (label column + one column per stimulus)")
       ->required();
   cmd->add_option("--dims", opt->dims, "Dimensions of the map")->check(CLI::Range(1, 10))->capture_default_str();
@@ -813,12 +857,12 @@ void register_mds(CLI::App& group) {
   cmd->add_option("-o,--output", opt->output, "Write the configuration as CSV (label, dim1, ...)");
   cmd->add_option("--plot", opt->plot, "Also draw the map (first two dimensions): FILE.png or FILE.svg");
   cmd->add_flag("--json", opt->json, "Print one JSON object");
-  cmd->callback([opt] {
+  cmd->callback([opt, in] {
     if (!opt->plot.empty()) {
       plots::check_output_path(opt->plot);
       if (opt->dims < 2) throw InputError(SourceLocation{"--plot", 0, 0}, "a map needs --dims 2 or more");
     }
-    const TidyCsv table = TidyCsv::read(opt->data);
+    const TidyCsv table = read_stats_table(opt->data, *in);
     const std::vector<std::string> pairs = split_commas(opt->pairs);
     if (!opt->pairs.empty() && pairs.size() != 3)
       throw InputError(SourceLocation{}, "--pairs: give three columns FIRST,SECOND,VALUE");
@@ -890,6 +934,7 @@ void register_mds(CLI::App& group) {
 void register_magnitude(CLI::App& group) {
   struct Options {
     std::string data, subject = "subject", first = "a", second = "b", rating = "rating", modulus_a, modulus_b, output;
+    double modulus_value = 0;  // 0: from the table's modulus_value column, else 10
     int dims = 2, starts = 3;
     std::uint64_t seed = 1;
     bool json = false;
@@ -899,15 +944,22 @@ void register_magnitude(CLI::App& group) {
       "magnitude",
       "Magnitude estimation of dissimilarity: per-listener modulus normalisation, geometric means per pair, "
       "dissimilarity matrix and metric SMACOF map");
+  auto in = std::make_shared<StatsInput>();
+  add_input_options(cmd, *in);
   cmd->add_option("data", opt->data, "Ratings CSV, one row per rated pair")->required();
   cmd->add_option("--subject", opt->subject, "Listener column")->capture_default_str();
   cmd->add_option("--a", opt->first, "First token column")->capture_default_str();
   cmd->add_option("--b", opt->second, "Second token column")->capture_default_str();
   cmd->add_option("--rating", opt->rating, "Magnitude estimate column (> 0)")->capture_default_str();
   cmd->add_option("--modulus-a", opt->modulus_a,
-                  "Modulus pair, first token: each listener's ratings are scaled so this pair is rated 10 "
-                  "(without a modulus pair: each listener scaled to the grand geometric mean)");
+                  "Modulus pair, first token: each listener's ratings are scaled so this pair is rated "
+                  "--modulus-value (default: the table's modulus_a/modulus_b columns, as the export writes them; "
+                  "without a modulus pair: each listener scaled to the grand geometric mean)");
   cmd->add_option("--modulus-b", opt->modulus_b, "Modulus pair, second token");
+  cmd->add_option("--modulus-value", opt->modulus_value,
+                  "The number the modulus pair stands for (default: the table's modulus_value column, which the "
+                  "export takes from the protocol; else 10)")
+      ->check(CLI::PositiveNumber);
   cmd->add_option("--dims", opt->dims, "Dimensions of the map")->check(CLI::Range(1, 10))->capture_default_str();
   cmd->add_option("--starts", opt->starts, "SMACOF random starts besides the classical one")
       ->check(CLI::Range(0, 1000))
@@ -915,12 +967,37 @@ void register_magnitude(CLI::App& group) {
   cmd->add_option("--seed", opt->seed, "Seed of the random starts")->capture_default_str();
   cmd->add_option("-o,--output", opt->output, "Write the dissimilarity matrix as square CSV (input of `stats mds`)");
   cmd->add_flag("--json", opt->json, "Print one JSON object");
-  cmd->callback([opt] {
+  cmd->callback([opt, in] {
     if (opt->modulus_a.empty() != opt->modulus_b.empty())
       throw InputError(SourceLocation{}, "--modulus-a and --modulus-b go together: give both tokens of the modulus pair");
-    const TidyCsv table = TidyCsv::read(opt->data);
+    const TidyCsv table = read_stats_table(opt->data, *in);
+    // The export's modulus columns (from the protocol): one pair and one value for all rows used.
+    auto constant_column = [&](const std::string& name) -> std::optional<std::string> {
+      if (!table.has_column(name) || table.rows() == 0) return std::nullopt;
+      const std::size_t c = table.column(name);
+      for (std::size_t r = 1; r < table.rows(); ++r)
+        if (table.cell(r, c) != table.cell(0, c))
+          throw InputError(table.where(r, c), "column '" + name + "': '" + table.cell(r, c) + "' here but '" +
+                                                  table.cell(0, c) + "' on line " + std::to_string(table.where(0, c).line) +
+                                                  ": rows from blocks with different moduli (choose one with --where block=ID)");
+      return table.cell(0, c);
+    };
+    if (opt->modulus_a.empty()) {
+      const auto a = constant_column("modulus_a"), b = constant_column("modulus_b");
+      if (a && b && !a->empty() && !b->empty()) {
+        opt->modulus_a = *a;
+        opt->modulus_b = *b;
+      }
+    }
     MagnitudeOptions mo;
     if (!opt->modulus_a.empty()) mo.modulus = {opt->modulus_a, opt->modulus_b};
+    if (opt->modulus_value > 0) {
+      mo.modulus_value = opt->modulus_value;
+    } else if (const auto v = constant_column("modulus_value"); v && !v->empty()) {
+      mo.modulus_value = table.number(0, table.column("modulus_value"));
+      if (!(mo.modulus_value > 0))
+        throw InputError(table.where(0, table.column("modulus_value")), "column 'modulus_value': must be above 0");
+    }
     const MagnitudeEstimation m =
         magnitude_estimation(table, {opt->subject, opt->first, opt->second, opt->rating}, mo);
     if (std::size_t(opt->dims) >= m.labels.size())
@@ -969,7 +1046,8 @@ void register_magnitude(CLI::App& group) {
     }
     std::printf("magnitude estimation: %zu listeners, %zu tokens, normalised by %s\n", m.listeners.size(),
                 m.labels.size(),
-                m.modulus ? ("the modulus pair (" + opt->modulus_a + ", " + opt->modulus_b + ") = 10").c_str()
+                m.modulus ? ("the modulus pair (" + opt->modulus_a + ", " + opt->modulus_b + ") = " +
+                             fmt("%g", mo.modulus_value)).c_str()
                           : "each listener's geometric mean");
     for (const auto& l : m.listeners)
       std::printf("  %-16s %4zu ratings  factor %.4g\n", l.subject.c_str(), l.ratings, l.factor);
@@ -994,14 +1072,16 @@ void register_limits(CLI::App& group) {
   auto opt = std::make_shared<Options>();
   CLI::App* cmd = group.add_subcommand(
       "limits", "Descending method of limits: the smallest level at which no change was heard, per track");
+  auto in = std::make_shared<StatsInput>();
+  add_input_options(cmd, *in);
   cmd->add_option("data", opt->data, "Tidy CSV, one row per trial, in presentation order")->required();
   cmd->add_option("--level", opt->level, "Column of the level presented (falling, e.g. a_v in dB)")->required();
   cmd->add_option("--response", opt->response, "Column of the answer")->required();
   cmd->add_option("--different", opt->different, "Answer meaning 'heard a difference'")->capture_default_str();
   cmd->add_option("--track", opt->track, "Column(s) identifying a series (e.g. participant,object)")->delimiter(',');
   cmd->add_flag("--json", opt->json, "Print one JSON object");
-  cmd->callback([opt] {
-    const TidyCsv table = TidyCsv::read(opt->data);
+  cmd->callback([opt, in] {
+    const TidyCsv table = read_stats_table(opt->data, *in);
     const std::size_t cl = table.column(opt->level), cr = table.column(opt->response);
     if (table.rows() == 0) throw InputError(SourceLocation{table.file(), 0, 0}, "no data rows");
     nlohmann::json tracks = nlohmann::json::array();
