@@ -12,9 +12,9 @@ namespace {
 class AbView : public TrialView {
  public:
   AbView(StudyController& c, QWidget* parent) : TrialView(c, parent) {
-    const Trial& trial = c.session().current();
-    const auto* body = std::get_if<AbBlock>(&c.session().current_block().body);
-    mode_ = body ? body->mode : AbMode::same_different;
+    const Trial& trial = c.trial();
+    const auto* spec = std::get_if<AbBlock>(&c.block().body);
+    mode_ = spec ? spec->mode : AbMode::same_different;
     c.set_sounds(sounds_of(c, trial.stimuli));
     QStringList labels{"A", "B"};
     const bool with_reference = mode_ != AbMode::abx && trial.stimuli.size() > 2;
@@ -29,21 +29,26 @@ class AbView : public TrialView {
                                   : "Compared with A, how is B? (-3 much worse ... +3 much better)");
         break;
     }
-    if (with_reference && mode_ != AbMode::bipolar) add_prompt("The reference plays after A and B.");
+    if (with_reference && mode_ != AbMode::bipolar) add_note("The reference plays after A and B.");
     add_sound_buttons(labels, false);
     if (mode_ == AbMode::bipolar) {
+      // Keys 1..7 choose -3..+3 (the number under each point).
       auto* row = new QHBoxLayout;
-      row->addWidget(new QLabel(with_reference ? "A much closer" : "much worse", this));
+      row->addWidget(new QLabel(with_reference ? "A much closer" : "much worse", body()));
       bipolar_ = new QButtonGroup(this);
       for (int v = -3; v <= 3; ++v) {
-        auto* r = new QRadioButton(v > 0 ? QString("+%1").arg(v) : QString::number(v), this);
+        auto* r = new QRadioButton(v > 0 ? QString("+%1").arg(v) : QString::number(v), body());
+        r->setToolTip(QString("key %1").arg(v + 4));
         r->setObjectName(QString("bipolar-%1").arg(v));
         bipolar_->addButton(r, v);
         row->addWidget(r);
+        add_key(QKeySequence(Qt::Key_1 + v + 3), [r] { r->click(); });
       }
-      row->addWidget(new QLabel(with_reference ? "B much closer" : "much better", this));
+      row->addWidget(new QLabel(with_reference ? "B much closer" : "much better", body()));
+      row->addStretch();
       connect(bipolar_, &QButtonGroup::idClicked, this, [this] { refresh(); });
       layout_->addLayout(row);
+      add_note("Keys 1 to 7 choose the points from left to right.");
     } else if (mode_ == AbMode::same_different) {
       choices_ = add_choices({"Same", "Different"}, {"same", "different"});
     } else if (mode_ == AbMode::abx) {

@@ -80,9 +80,12 @@ void AudioOutput::tick() {
       frames_due_ -= static_cast<double>(n);
     }
   }
+  // The mixer applies commands at its next render: its state, not the last click, is what is heard.
   const bool playing = mixer_.playing();
-  if (playing != was_playing_) {
+  const int current = mixer_.current();
+  if (playing != was_playing_ || (playing && current != was_current_)) {
     was_playing_ = playing;
+    was_current_ = current;
     emit playingChanged(playing);
   }
 }

@@ -37,7 +37,7 @@ class AudioOutput : public QObject {
   static QStringList device_names();  // descriptions of the system's outputs
 
  signals:
-  void playingChanged(bool playing);
+  void playingChanged(bool playing);  // also when the mixer switched to another stimulus
 
  private:
   void tick();
@@ -52,6 +52,7 @@ class AudioOutput : public QObject {
   double frames_due_ = 0.0;   // null output: frames owed to the clock
   std::vector<float> scratch_;
   bool was_playing_ = false;
+  int was_current_ = -1;
 };
 
 // A 1 kHz sine, 1 s at -20 dBFS with 10 ms raised-cosine ramps, for checking the output level.

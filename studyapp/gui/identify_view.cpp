@@ -8,13 +8,13 @@ namespace {
 class IdentifyView : public TrialView {
  public:
   IdentifyView(StudyController& c, QWidget* parent) : TrialView(c, parent) {
-    const auto* body = std::get_if<IdentifyBlock>(&c.session().current_block().body);
-    c.set_sounds(sounds_of(c, c.session().current().stimuli));
+    const auto* spec = std::get_if<IdentifyBlock>(&c.block().body);
+    c.set_sounds(sounds_of(c, c.trial().stimuli));
     add_prompt("What do you hear? Choose the best label.");
     add_sound_buttons({"Sound"}, false);
     QStringList labels;
-    if (body)
-      for (const std::string& l : body->labels) labels << QString::fromStdString(l);
+    if (spec)
+      for (const std::string& l : spec->labels) labels << QString::fromStdString(l);
     choices_ = add_choices(labels, labels);
     add_next([this, labels] { return labels[choices_->checkedId()].toStdString(); });
   }

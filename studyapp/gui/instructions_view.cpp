@@ -8,8 +8,8 @@ namespace {
 class InstructionsView : public TrialView {
  public:
   InstructionsView(StudyController& c, QWidget* parent) : TrialView(c, parent) {
-    const auto* body = std::get_if<InstructionsBlock>(&c.session().current_block().body);
-    add_prompt(QString::fromStdString(body ? body->text : std::string()))->setObjectName("instructions");
+    const auto* spec = std::get_if<InstructionsBlock>(&c.block().body);
+    add_prompt(QString::fromStdString(spec ? spec->text : std::string()))->setObjectName("instructions");
     add_next([] { return nlohmann::json("ok"); }, "Continue");
   }
 };

@@ -1,8 +1,11 @@
-// Magnitude estimation: the modulus pair (= 100) is played first, then the trial's pair; the participant
-// types how different the pair sounds as a number > 0 relative to the modulus.
-#include <QDoubleValidator>
+// Magnitude estimation: the reference pair (= 100) is played first, then the trial's pair; the participant
+// types how different the pair sounds relative to the reference pair. The field takes a decimal point or
+// comma, says why a value is refused (core's read_magnitude), takes 0 where the block has identical pairs,
+// and has the keyboard focus from the start (Enter = Next).
 #include <QLineEdit>
+#include <QTimer>
 
+#include "studyapp/core/magnitude_input.hpp"
 #include "studyapp/gui/trial_view.hpp"
 
 namespace ms::gui {
@@ -12,53 +15,52 @@ namespace {
 class MagnitudeView : public TrialView {
  public:
   MagnitudeView(StudyController& c, QWidget* parent) : TrialView(c, parent) {
-    const Trial& trial = c.session().current();
-    const auto* body = std::get_if<MagnitudeBlock>(&c.session().current_block().body);
+    const Trial& trial = c.trial();
+    const auto* mb = std::get_if<MagnitudeBlock>(&c.block().body);
+    zero_allowed_ = mb && mb->identical_pairs;
     std::vector<std::string> names;
     QStringList labels;
-    if (body && body->modulus) {
-      names = {(*body->modulus)[0].name, (*body->modulus)[1].name};
-      labels << "Modulus 1" << "Modulus 2";
+    if (mb && mb->modulus) {
+      names = {(*mb->modulus)[0].name, (*mb->modulus)[1].name};
+      labels << "Reference pair 1" << "Reference pair 2";
       modulus_count_ = 2;
     }
     names.insert(names.end(), trial.stimuli.begin(), trial.stimuli.end());
     labels << "A" << "B";
     c.set_sounds(sounds_of(c, names));
-    require_all_played_ = c.session().current_block().listen_all;
-    add_prompt(modulus_count_ ? "First listen to the modulus pair: its difference is 100. Then listen to A and B "
-                                "and type how different they sound (e.g. 50 = half as different, 200 = twice)."
-                              : "Listen to A and B and type how different they sound (a number above 0).");
+    add_prompt(modulus_count_ ? "First listen to the reference pair: its difference counts as 100. Then listen to "
+                                "A and B and type how different they sound (50 = half as different, 200 = twice "
+                                "as different)."
+                              : "Listen to A and B and type how different they sound.");
+    if (zero_allowed_) add_note("Type 0 if A and B sound exactly the same.");
     add_sound_buttons(labels, false);
-    entry_ = new QLineEdit(this);
+    entry_ = new QLineEdit(body());
     entry_->setObjectName("magnitude");
-    entry_->setPlaceholderText("difference (modulus = 100)");
-    auto* validator = new QDoubleValidator(0.0, 1e6, 3, entry_);
-    validator->setNotation(QDoubleValidator::StandardNotation);
-    validator->setLocale(QLocale::c());
-    entry_->setValidator(validator);
+    entry_->setPlaceholderText(modulus_count_ ? "how different? (reference pair = 100)" : "how different?");
+    entry_->setMaximumWidth(entry_->fontMetrics().averageCharWidth() * 40);
     connect(entry_, &QLineEdit::textChanged, this, [this] { refresh(); });
     layout_->addWidget(entry_);
-    add_next([this] { return value(); });
+    add_next([this] { return *read_magnitude(entry_->text().toStdString(), zero_allowed_).value; });
     gate_pair();
+    QTimer::singleShot(0, entry_, [e = entry_] { e->setFocus(Qt::OtherFocusReason); });
   }
 
  protected:
-  bool ready() const override { return value() > 0.0; }
+  bool ready() const override { return read_magnitude(entry_->text().toStdString(), zero_allowed_).value.has_value(); }
+  QString why_incomplete() const override {
+    return QString::fromStdString(read_magnitude(entry_->text().toStdString(), zero_allowed_).problem);
+  }
   void on_sound_played(int) override { gate_pair(); }
 
  private:
-  double value() const {
-    bool ok = false;
-    const double v = QLocale::c().toDouble(entry_->text(), &ok);
-    return ok ? v : 0.0;
-  }
-  // The pair is playable once the modulus pair was heard.
+  // The pair is playable once the reference pair was heard.
   void gate_pair() {
     const bool modulus_heard = modulus_count_ == 0 || (controller_.was_played(0) && controller_.was_played(1));
     for (std::size_t i = modulus_count_; i < controller_.sounds().size(); ++i) play_button(i)->setEnabled(modulus_heard);
   }
 
   std::size_t modulus_count_ = 0;
+  bool zero_allowed_ = false;
   QLineEdit* entry_ = nullptr;
 };
 

@@ -4,11 +4,14 @@
 #include <QShortcut>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QScreen>
+#include <QScrollArea>
 #include <QVBoxLayout>
 
 #include <filesystem>
 
 #include "studyapp/core/autopilot.hpp"
+#include "studyapp/core/participant_status.hpp"
 #include "studyapp/gui/experimenter_window.hpp"
 #include "studyapp/gui/trial_view.hpp"
 #include "synthesis/input_error.hpp"
@@ -42,14 +45,22 @@ QWidget* message_page(const QString& text, QLabel** label, QPushButton** button,
 
 MainWindow::MainWindow(const AppOptions& options, QWidget* parent) : QMainWindow(parent), options_(options) {
   setWindowTitle("studyapp — ModalStudy");
-  resize(900, 620);
+  // 900 x 620, or less on a small (or scaled) screen: the pages scroll rather than leave the screen.
+  const QRect screen = this->screen() ? this->screen()->availableGeometry() : QRect(0, 0, 1024, 600);
+  resize(std::min(900, screen.width()), std::min(620, screen.height() - 40));
   pages_ = new QStackedWidget(this);
   setCentralWidget(pages_);
 
   start_page_ = new StartPage;
-  pages_->addWidget(start_page_);
+  auto* start_scroll = new QScrollArea;  // a small or scaled screen scrolls the form; Start stays in the page
+  start_scroll->setObjectName("startScroll");
+  start_scroll->setWidgetResizable(true);
+  start_scroll->setFrameShape(QFrame::NoFrame);
+  start_scroll->setWidget(start_page_);
+  pages_->addWidget(start_scroll);
   connect(start_page_, &StartPage::loadRequested, this, &MainWindow::load_protocol);
   connect(start_page_, &StartPage::startRequested, this, &MainWindow::start);
+  connect(start_page_, &StartPage::participantChanged, this, &MainWindow::update_participant_status);
   connect(start_page_, &StartPage::audioDeviceChosen, this, [this](const QString& device) {
     if (controller_ && controller_->problems().empty()) start_page_->set_audio_message(controller_->set_audio_device(device));
   });
@@ -65,6 +76,7 @@ MainWindow::MainWindow(const AppOptions& options, QWidget* parent) : QMainWindow
   progress_ = new QProgressBar(session_page_);
   progress_->setObjectName("progress");
   progress_->setFormat("%v of %m answered");
+  progress_->setMaximumWidth(360);
   resumed_ = new QLabel(session_page_);
   resumed_->setObjectName("resumedNotice");
   resumed_->setStyleSheet("color: #1f5f9f");
@@ -77,6 +89,7 @@ MainWindow::MainWindow(const AppOptions& options, QWidget* parent) : QMainWindow
   view_holder_->setLayout(new QVBoxLayout);
   view_holder_->layout()->setContentsMargins(0, 0, 0, 0);
   session_layout->addWidget(view_holder_, 1);
+  session_layout->setContentsMargins(8, 6, 8, 4);
   error_ = new QLabel(session_page_);
   error_->setObjectName("error");
   error_->setStyleSheet("color: #b00020");
@@ -96,7 +109,17 @@ MainWindow::MainWindow(const AppOptions& options, QWidget* parent) : QMainWindow
   pages_->addWidget(done_page_);
 
   QMenu* menu = menuBar()->addMenu("&Study");
-  menu->addAction("&Experimenter view…", this, &MainWindow::open_experimenter_view);
+  experimenter_action_ = menu->addAction("&Experimenter view…", this, [this] { request_experimenter_view(); });
+  experimenter_action_->setObjectName("experimenterAction");
+  auto* locked = new QShortcut(QKeySequence("Ctrl+Shift+E"), this);
+  connect(locked, &QShortcut::activated, this, [this] { request_experimenter_view(); });
+  confirm_ = [this] {
+    return QMessageBox::question(this, "Experimenter view",
+                                 "A participant's session is running. Open the experimenter view (results of "
+                                 "every participant) on this screen?",
+                                 QMessageBox::Open | QMessageBox::Cancel, QMessageBox::Cancel) == QMessageBox::Open;
+  };
+  connect(pages_, &QStackedWidget::currentChanged, this, [this] { update_menu(); });
   menu->addAction("&Quit", QKeySequence::Quit, this, &QWidget::close);
 
   start_page_->set_audio_choices(QString::fromStdString(options_.audio));
@@ -138,6 +161,27 @@ void MainWindow::load_protocol(const QString& path) {
   const QString audio_message = c->set_audio_device(start_page_->audio_device());
   if (!audio_message.isEmpty()) start_page_->set_audio_message(audio_message);
   c->prepare();
+  update_participant_status();
+}
+
+void MainWindow::update_participant_status() {
+  if (!controller_ || !controller_->problems().empty() || start_page_->participant().isEmpty() ||
+      start_page_->db_path().isEmpty())
+    return start_page_->show_participant_status(QString(), false, {});
+  try {
+    const ParticipantStatus status = participant_status(start_page_->db_path().toStdString(),
+                                                        controller_->protocol().study,
+                                                        start_page_->participant().toStdString());
+    QString line = QString::fromStdString(describe(status));
+    if (status.state == ParticipantStatus::State::unfinished) line += "; Start resumes it.";
+    else if (status.state == ParticipantStatus::State::finished) line += ".";
+    if (status.autopilot && status.state != ParticipantStatus::State::none) line += " (simulated by the autopilot)";
+    QStringList look_alikes;
+    for (const std::string& id : status.look_alikes) look_alikes << QString::fromStdString(id);
+    start_page_->show_participant_status(line, status.state == ParticipantStatus::State::finished, look_alikes);
+  } catch (const std::exception& e) {
+    start_page_->show_participant_status(QString::fromStdString(e.what()), false, {});
+  }
 }
 
 void MainWindow::start() {
@@ -146,18 +190,27 @@ void MainWindow::start() {
   std::error_code ignored;  // an unusable folder is reported by the store, naming the file
   if (db.has_parent_path()) std::filesystem::create_directories(db.parent_path(), ignored);
   try {
-    controller_->start_session(start_page_->participant().toStdString(), start_page_->db_path().toStdString());
+    SessionStart how;
+    how.new_session = start_page_->new_session() || options_.new_session;
+    controller_->start_session(start_page_->participant().toStdString(), start_page_->db_path().toStdString(), how);
   } catch (const std::exception& e) {
     QMessageBox::warning(this, "Cannot start the session", QString::fromStdString(e.what()));
     return;
   }
   Session& s = controller_->session();
-  if (s.resumed()) {
+  resumed_at_ = s.answered();
+  if (s.resumed() && !s.finished()) {
     resumed_->setText(QString("Resumed an unfinished session: continuing at trial %1 of %2 (earlier answers are kept).")
                           .arg(s.answered() + 1)
                           .arg(s.total()));
     resumed_->show();
   }
+}
+
+void MainWindow::preview(const Trial& trial) {
+  if (!controller_ || !controller_->problems().empty()) return;
+  controller_->preview(trial);
+  show_trial();
 }
 
 void MainWindow::show_trial() {
@@ -166,6 +219,8 @@ void MainWindow::show_trial() {
     view_->deleteLater();  // may be inside its own Next handler
   }
   error_->clear();
+  if (controller_->previewing() || controller_->session().answered() > resumed_at_)
+    resumed_->hide();  // said once, on the first trial
   view_ = make_trial_view(*controller_, view_holder_);
   view_holder_->layout()->addWidget(view_);
   view_->show();
@@ -197,22 +252,42 @@ void MainWindow::show_done() {
 }
 
 void MainWindow::update_header() {
-  Session& s = controller_->session();
-  progress_->setRange(0, static_cast<int>(s.total()));
-  progress_->setValue(static_cast<int>(s.answered()));
-  const Trial& t = s.current();
-  position_->setText(QString("<b>%1</b> (%2)%3 — trial %4 of %5")
-                         .arg(QString::fromStdString(t.block_id), QString::fromStdString(to_string(t.type)))
-                         .arg(t.training ? " — training" : "")
-                         .arg(s.current_index() + 1)
-                         .arg(s.total()));
+  const bool live = !controller_->previewing();
+  const std::size_t total = live ? controller_->session().total() : 1;
+  const std::size_t answered = live ? controller_->session().answered() : 0;
+  const std::size_t index = live ? controller_->session().current_index() : 0;
+  progress_->setRange(0, static_cast<int>(total));
+  progress_->setValue(static_cast<int>(answered));
+  const Trial& t = controller_->trial();
+  position_->setText(QString("%1<b>%2</b> \u00B7 trial %3 of %4")
+                         .arg(t.training ? QString("Practice \u00B7 ") : QString())
+                         .arg(task_title(controller_->block()))
+                         .arg(index + 1)
+                         .arg(total));
 }
 
-void MainWindow::open_experimenter_view() {
+bool MainWindow::in_session() const {
+  const QWidget* page = pages_->currentWidget();
+  return page == session_page_ || page == break_page_;
+}
+
+void MainWindow::update_menu() {
+  if (!experimenter_action_) return;
+  experimenter_action_->setEnabled(!in_session());
+  experimenter_action_->setText(in_session() ? "&Experimenter view… (Ctrl+Shift+E)" : "&Experimenter view…");
+}
+
+QWidget* MainWindow::request_experimenter_view() {
+  if (in_session() && !(confirm_ && confirm_())) return nullptr;
+  return open_experimenter_view();
+}
+
+QWidget* MainWindow::open_experimenter_view() {
   const QString db = controller_ && controller_->problems().empty() ? start_page_->db_path() : QString();
   auto* w = new ExperimenterWindow(db);
   w->setAttribute(Qt::WA_DeleteOnClose);
   w->show();
+  return w;
 }
 
 }  // namespace ms::gui

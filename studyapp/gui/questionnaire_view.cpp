@@ -14,23 +14,23 @@ namespace {
 class QuestionnaireView : public TrialView {
  public:
   QuestionnaireView(StudyController& c, QWidget* parent) : TrialView(c, parent) {
-    const auto* body = std::get_if<QuestionnaireBlock>(&c.session().current_block().body);
+    const auto* spec = std::get_if<QuestionnaireBlock>(&c.block().body);
     add_prompt("A few questions to finish.");
     auto* form = new QFormLayout;
-    const std::vector<Question> questions = body ? body->questions : std::vector<Question>{};
+    const std::vector<Question> questions = spec ? spec->questions : std::vector<Question>{};
     for (std::size_t i = 0; i < questions.size(); ++i) {
       const Question& q = questions[i];
       const std::string id = question_id(q, i);
       Item item{id, nullptr, nullptr, {}};
       if (q.options.empty()) {
-        item.text = new QLineEdit(this);
+        item.text = new QLineEdit(body());
         item.text->setObjectName(QString::fromStdString("question-" + id));
         form->addRow(QString::fromStdString(q.text), item.text);
       } else {
         auto* row = new QHBoxLayout;
         item.options = new QButtonGroup(this);
         for (std::size_t k = 0; k < q.options.size(); ++k) {
-          auto* r = new QRadioButton(QString::fromStdString(q.options[k]), this);
+          auto* r = new QRadioButton(QString::fromStdString(q.options[k]), body());
           r->setObjectName(QString::fromStdString("option-" + id + "-" + q.options[k]));
           item.options->addButton(r, static_cast<int>(k));
           row->addWidget(r);

@@ -13,30 +13,30 @@ namespace {
 class RatingView : public TrialView {
  public:
   RatingView(StudyController& c, QWidget* parent) : TrialView(c, parent) {
-    const auto* body = std::get_if<RatingBlock>(&c.session().current_block().body);
-    c.set_sounds(sounds_of(c, c.session().current().stimuli));
-    require_all_played_ = c.session().current_block().listen_all;
+    const auto* spec = std::get_if<RatingBlock>(&c.block().body);
+    c.set_sounds(sounds_of(c, c.trial().stimuli));
     add_prompt("Listen to the sound and rate it on each scale.");
     add_sound_buttons({"Sound"}, false);
     auto* grid = new QGridLayout;
     int row = 0, max_points = 0;
-    for (const RatingAttribute& a : body ? body->attributes : std::vector<RatingAttribute>{}) {
+    for (const RatingAttribute& a : spec ? spec->attributes : std::vector<RatingAttribute>{}) {
       const QString name = QString::fromStdString(a.name);
-      grid->addWidget(new QLabel("<b>" + name + "</b>", this), row, 0);
-      grid->addWidget(new QLabel(QString::fromStdString(a.low), this), row, 1, Qt::AlignRight);
+      grid->addWidget(new QLabel("<b>" + name + "</b>", body()), row, 0);
+      grid->addWidget(new QLabel(QString::fromStdString(a.low), body()), row, 1, Qt::AlignRight);
       auto* group = new QButtonGroup(this);
       for (int k = 1; k <= a.points; ++k) {
-        auto* r = new QRadioButton(QString::number(k), this);
+        auto* r = new QRadioButton(QString::number(k), body());
         r->setObjectName(QString("rating-%1-%2").arg(name).arg(k));
         group->addButton(r, k);
         grid->addWidget(r, row, 1 + k);
       }
-      grid->addWidget(new QLabel(QString::fromStdString(a.high), this), row, 2 + a.points);
+      grid->addWidget(new QLabel(QString::fromStdString(a.high), body()), row, 2 + a.points);
       connect(group, &QButtonGroup::idClicked, this, [this] { refresh(); });
       scales_.push_back({a.name, group});
       max_points = std::max(max_points, a.points);
       ++row;
     }
+    grid->setColumnStretch(3 + max_points, 1);  // the end labels stay beside their scale on wide windows
     layout_->addLayout(grid);
     for (int k = 1; k <= std::min(max_points, 9); ++k) {
       auto* key = new QShortcut(QKeySequence(Qt::Key_0 + k), this);

@@ -1,8 +1,9 @@
 // Adaptive staircase (three intervals): each step plays the reference (the block's `reference`, default
 // the stimulus as defined), then A and B — one of them the reference again, the other the stimulus with
 // the tracked parameter at the track's level (rendered on a worker) — and asks which of A/B is the same
-// as the reference. Each answer is one Session step; the
-// trial ends when the track does. Which interval holds the comparison is drawn from the session's seed.
+// as the reference. Each answer is one Session step; the trial ends when the track does. The view shows the
+// steps and reversals so far of their maxima, and (with `feedback: true`) whether each answer was right.
+// Which interval holds the comparison is drawn from the session's seed.
 #include <QTimer>
 
 #include <random>
@@ -17,24 +18,23 @@ namespace {
 class StaircaseView : public TrialView {
  public:
   StaircaseView(StudyController& c, QWidget* parent) : TrialView(c, parent) {
-    const auto* body = std::get_if<StaircaseBlock>(&c.session().current_block().body);
-    if (body) block_ = *body;
+    const auto* spec = std::get_if<StaircaseBlock>(&c.block().body);
+    if (spec) block_ = *spec;
     setObjectName("staircase-view");
-    require_all_played_ = true;
     add_prompt("Listen to the reference, then to A and B. Which of A and B is the same as the reference?");
     reference_name_ = block_.reference ? block_.reference->name : block_.stimulus.name;
-    reference_ = c.cache().samples(reference_name_);
+    reference_ = c.samples(reference_name_);
     c.set_sounds({Sound{"reference", reference_}, Sound{"A", reference_}, Sound{"B", reference_}});
-    auto* sequence = new QPushButton(QString::fromUtf8("\u25B6 Play reference, A, B"), this);
+    auto* sequence = new QPushButton(QString::fromUtf8("\u25B6 Play reference, A, B"), body());
     sequence->setObjectName("play-sequence");
     connect(sequence, &QPushButton::clicked, this, [this] { play_sequence(0); });
     layout_->addWidget(sequence);
     add_sound_buttons({"Reference", "A", "B"}, false);
     choices_ = add_choices({"A", "B"}, {"A", "B"});
-    step_label_ = new QLabel(this);
+    step_label_ = new QLabel(body());
     step_label_->setObjectName("step");
     layout_->addWidget(step_label_);
-    add_next_action([this] { answer_step(); }, "Answer");
+    add_next_action([this] { answer_step(); }, "Next");
     connect(&controller_, &StudyController::playingChanged, this, [this](bool playing) {
       if (!playing && sequence_next_ > 0 && sequence_next_ < 3)
         QTimer::singleShot(400, this, [this] { play_sequence(sequence_next_); });
@@ -47,18 +47,26 @@ class StaircaseView : public TrialView {
 
  private:
   void start_step() {
-    const std::size_t step = controller_.session().staircase().levels().size();
-    std::mt19937_64 rng(controller_.session().schedule().seed ^ (0x9e3779b97f4a7c15ULL * (step + 1)));
+    const bool live = controller_.has_session() && !controller_.previewing();
+    const std::size_t step = live ? controller_.session().staircase().levels().size() : 0;
+    const std::size_t reversals = live ? controller_.session().staircase().reversals() : 0;
+    std::mt19937_64 rng((live ? controller_.session().schedule().seed : 0) ^ (0x9e3779b97f4a7c15ULL * (step + 1)));
     comparison_in_b_ = (rng() & 1U) != 0;
-    level_ = controller_.session().staircase().level();
+    level_ = live ? controller_.session().staircase().level() : block_.start;
     comparison_ready_ = false;
     if (QAbstractButton* b = choices_->checkedButton()) {
       choices_->setExclusive(false);
       b->setChecked(false);
       choices_->setExclusive(true);
     }
-    step_label_->setText(QString("Step %1").arg(step + 1));
+    step_label_->setText(QString("Step %1 of at most %2 \u00B7 %3 of %4 turning points \u2014 this part ends after "
+                                 "%4 turning points.")
+                             .arg(step + 1)
+                             .arg(StaircaseTrack::kMaxSteps)
+                             .arg(reversals)
+                             .arg(block_.reversals));
     for (std::size_t i = 0; i < 3; ++i) play_button(i)->setEnabled(false);
+    if (!live) return;
     render_async(controller_.cache(), block_.stimulus.name, {override_text(block_.parameter, level_)}, this,
                  [this](Samples samples, double, const std::string& error) {
                    if (!error.empty()) return step_label_->setText(QString::fromStdString("cannot render: " + error));
@@ -80,12 +88,15 @@ class StaircaseView : public TrialView {
   }
 
   void answer_step() {
-    if (!ready() || !controller_.played_all()) return;
+    if (!gate().may_send) return;
     sequence_next_ = 0;
     controller_.stop();
     const bool chose_b = choices_->checkedId() == 1;
     const bool correct = chose_b != comparison_in_b_;  // the reference's copy is the one without the comparison
-    if (controller_.staircase_step(correct)) start_step();
+    const bool feedback = controller_.block().feedback;
+    if (!controller_.staircase_step(correct)) return;  // the track ended: the window shows the next trial
+    if (feedback) show_feedback(correct ? "Right." : "Not quite.", correct);
+    start_step();
   }
 
   StaircaseBlock block_;

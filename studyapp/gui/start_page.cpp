@@ -41,10 +41,26 @@ StartPage::StartPage(QWidget* parent) : QWidget(parent) {
   participant_ = new QLineEdit(this);
   participant_->setObjectName("participant");
   participant_->setPlaceholderText("e.g. P07");
-  connect(participant_, &QLineEdit::textChanged, this, [this] { update_start(); });
+  connect(participant_, &QLineEdit::textChanged, this, [this] {
+    update_start();
+    emit participantChanged();
+  });
   form->addRow("Participant", participant_);
+  status_ = new QLabel(this);
+  status_->setObjectName("participantStatus");
+  status_->setWordWrap(true);
+  status_->setStyleSheet("color: #1f5f9f");
+  new_session_ = new QCheckBox("Run a new session for this participant", this);
+  new_session_->setObjectName("newSession");
+  new_session_->hide();
+  connect(new_session_, &QCheckBox::toggled, this, [this] { update_start(); });
+  auto* status_box = new QVBoxLayout;
+  status_box->addWidget(status_);
+  status_box->addWidget(new_session_);
+  form->addRow(QString(), status_box);
   db_ = new QLineEdit(this);
   db_->setObjectName("db");
+  connect(db_, &QLineEdit::textChanged, this, [this] { emit participantChanged(); });
   form->addRow("Results file", db_);
 
   audio_ = new QComboBox(this);
@@ -146,6 +162,21 @@ void StartPage::show_prepared(const QString& error) {
   update_start();
 }
 
-void StartPage::update_start() { start_->setEnabled(prepared_ && !participant().isEmpty()); }
+void StartPage::show_participant_status(const QString& line, bool finished, const QStringList& look_alikes) {
+  QString text = line;
+  for (const QString& other : look_alikes)
+    text += QString("%1Careful: '%2' is already in this results file; is it the same person?")
+                .arg(text.isEmpty() ? "" : "\n", other);
+  status_->setText(text);
+  status_->setVisible(!text.isEmpty());
+  finished_ = finished;
+  new_session_->setVisible(finished);
+  if (!finished) new_session_->setChecked(false);
+  update_start();
+}
+
+void StartPage::update_start() {
+  start_->setEnabled(prepared_ && !participant().isEmpty() && (!finished_ || new_session_->isChecked()));
+}
 
 }  // namespace ms::gui

@@ -1,6 +1,7 @@
 // The start page: choose the protocol (its problems listed, every one), the participant and the results
 // file; choose and check the audio device (1 kHz calibration tone); watch the stimuli render; start.
 #pragma once
+#include <QCheckBox>
 #include <QComboBox>
 #include <QLabel>
 #include <QLineEdit>
@@ -33,19 +34,26 @@ class StartPage : public QWidget {
   void show_loaded(const QString& title, int stimuli);  // a valid protocol is loaded
   void show_progress(int done, int total, const QString& name);
   void show_prepared(const QString& error);
+  // What the results file holds for the typed participant: one line (finished / unfinished / nothing),
+  // look-alike ids; a finished participant starts only with "Run a new session" checked.
+  void show_participant_status(const QString& line, bool finished, const QStringList& look_alikes);
+  bool new_session() const { return new_session_->isChecked(); }
 
  signals:
   void loadRequested(QString path);
   void audioDeviceChosen(QString device);
   void calibrateRequested();
   void startRequested();
+  void participantChanged();  // the participant or the results file was edited
 
  private:
   void update_start();
 
   QLineEdit *protocol_, *participant_, *db_;
   QPlainTextEdit* problems_;
-  QLabel *title_, *audio_message_, *progress_label_;
+  QLabel *title_, *audio_message_, *progress_label_, *status_;
+  QCheckBox* new_session_;
+  bool finished_ = false;
   QComboBox* audio_;
   QPushButton *calibrate_, *start_;
   QProgressBar* progress_;

@@ -75,9 +75,31 @@ void StudyController::play_calibration_tone() {
   audio_->mixer().play(0);
 }
 
-void StudyController::start_session(const std::string& participant, const std::string& db_path) {
-  session_ = std::make_unique<Session>(*protocol_, protocol_text_, participant, db_path, cache_->hashes(), now_ms());
+void StudyController::start_session(const std::string& participant, const std::string& db_path,
+                                    const SessionStart& start) {
+  preview_.reset();
+  session_ = std::make_unique<Session>(*protocol_, protocol_text_, participant, db_path, cache_->hashes(), now_ms(), start);
   show_current();
+}
+
+const Trial& StudyController::trial() const { return preview_ ? *preview_ : session_->current(); }
+
+const Block& StudyController::block() const { return protocol_->blocks.at(trial().block); }
+
+void StudyController::preview(const Trial& trial) {
+  preview_ = trial;
+  audio_->mixer().stop();
+  sounds_.clear();
+  played_.clear();
+}
+
+Samples StudyController::samples(const std::string& stimulus) {
+  if (preview_) return std::make_shared<const std::vector<float>>();
+  return cache_->samples(stimulus);
+}
+
+void StudyController::hold_reaction_time() {
+  if (!held_rt_ms_) held_rt_ms_ = elapsed_ms();
 }
 
 void StudyController::show_current() {
@@ -85,6 +107,7 @@ void StudyController::show_current() {
   sounds_.clear();
   played_.clear();
   plays_ = 0;
+  held_rt_ms_.reset();
   trial_clock_.start();
   if (session_->finished()) emit finished();
   else emit trialShown();
@@ -104,6 +127,7 @@ void StudyController::replace_sound(std::size_t index, Sound sound) {
   std::vector<Samples> buffers;
   for (const Sound& s : sounds_) buffers.push_back(s.samples);
   audio_->mixer().set_stimuli(std::move(buffers));  // stops playback
+  played_.erase(index);  // the new version has not been heard
   if (was_playing) emit playingChanged(false);
 }
 
@@ -146,7 +170,9 @@ int StudyController::playing_index() const {
   return current >= 0 && static_cast<std::size_t>(current) < sounds_.size() ? current : -1;
 }
 
-double StudyController::elapsed_ms() const { return static_cast<double>(trial_clock_.nsecsElapsed()) * 1e-6; }
+double StudyController::elapsed_ms() const {
+  return held_rt_ms_ ? *held_rt_ms_ : static_cast<double>(trial_clock_.nsecsElapsed()) * 1e-6;
+}
 
 bool StudyController::submit(const nlohmann::json& value) {
   try {
@@ -174,6 +200,7 @@ bool StudyController::staircase_step(bool correct) {
   }
   if (session_->current_index() == trial && !session_->finished()) {
     played_.clear();
+    held_rt_ms_.reset();
     trial_clock_.start();
     return true;
   }

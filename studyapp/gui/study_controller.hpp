@@ -54,24 +54,35 @@ class StudyController : public QObject {
   void play_calibration_tone();
 
   // Opens or resumes the participant's session; emits trialShown (or finished). Throws InputError.
-  void start_session(const std::string& participant, const std::string& db_path);
+  void start_session(const std::string& participant, const std::string& db_path, const SessionStart& start = {});
   bool has_session() const { return session_ != nullptr; }
   Session& session() { return *session_; }
 
+  // The trial a view shows and its block: the session's current one, or the previewed one.
+  const Trial& trial() const;         // precondition: has_trial()
+  const Block& block() const;
+  bool has_trial() const { return preview_.has_value() || (session_ && !session_->finished()); }
+  // Layout preview without a session (tests, screenshots of every block): views of `trial` can be built;
+  // sounds are empty buffers, nothing is played, logged or stored.
+  void preview(const Trial& trial);
+  bool previewing() const { return preview_.has_value(); }
+  Samples samples(const std::string& stimulus);  // the cache's, or an empty buffer in a preview
+
   // --- the current trial: sounds, plays, answer ---
   void set_sounds(std::vector<Sound> sounds);
-  void replace_sound(std::size_t index, Sound sound);  // adjust/staircase: a re-synthesised version
+  void replace_sound(std::size_t index, Sound sound);  // adjust/staircase: a re-synthesised version (not heard yet)
   const std::vector<Sound>& sounds() const { return sounds_; }
   void set_loop(bool loop);
-  void play(std::size_t index);       // from the start; logs "play"
+  void play(std::size_t index);       // from the start; logs "play"; the sound counts as heard
   void switch_to(std::size_t index);  // same position if playing (MUSHRA); logs "switch"
   void stop();                        // logs "stop"
   bool playing() const;
-  int playing_index() const;          // -1 when silent
+  int playing_index() const;          // what the mixer plays now (-1 when silent); views light its button
   bool was_played(std::size_t index) const { return played_.count(index) > 0; }
   bool played_all() const { return played_.size() >= sounds_.size(); }
   int plays() const { return plays_; }
-  double elapsed_ms() const;           // since the trial was shown
+  double elapsed_ms() const;           // since the trial was shown (or until hold_reaction_time())
+  void hold_reaction_time();           // the answer is given: training feedback time is not reaction time
 
   // Commits the answer (Session::answer) before anything else is shown; false (and error signal) if
   // the session rejects it.
@@ -103,6 +114,8 @@ class StudyController : public QObject {
   bool prepared_ = false;
   std::unique_ptr<class QThread> worker_;  // prepare(); joined on destruction
 
+  std::optional<Trial> preview_;
+  std::optional<double> held_rt_ms_;
   std::vector<Sound> sounds_;
   std::set<std::size_t> played_;
   int plays_ = 0;

@@ -4,23 +4,63 @@
 #include <QCheckBox>
 #include <QShortcut>
 
+#include "studyapp/core/training_feedback.hpp"
+
 namespace ms::gui {
 
+namespace {
+
+// Lines longer than about 80 characters are hard to read; wide screens get margins instead.
+int readable_width(const QWidget* w) { return w->fontMetrics().averageCharWidth() * 80; }
+
+}  // namespace
+
 TrialView::TrialView(StudyController& controller, QWidget* parent)
-    : QWidget(parent), controller_(controller), layout_(new QVBoxLayout(this)) {
+    : QWidget(parent), controller_(controller) {
+  auto* outer = new QVBoxLayout(this);
+  outer->setContentsMargins(0, 0, 0, 0);
+  scroll_ = new QScrollArea(this);
+  scroll_->setObjectName("trialScroll");
+  scroll_->setWidgetResizable(true);
+  scroll_->setFrameShape(QFrame::NoFrame);
+  auto* holder = new QWidget(scroll_);
+  auto* centre = new QHBoxLayout(holder);
+  centre->setContentsMargins(0, 0, 0, 0);
+  body_ = new QWidget(holder);
+  body_->setObjectName("trialBody");
+  body_->setMaximumWidth(readable_width(this) * 3 / 2);
+  layout_ = new QVBoxLayout(body_);
+  layout_->setContentsMargins(4, 4, 4, 4);
+  centre->addStretch(0);
+  centre->addWidget(body_, 1);
+  centre->addStretch(0);
+  scroll_->setWidget(holder);
+  outer->addWidget(scroll_, 1);
+  feedback_ = new QLabel(this);
+  feedback_->setObjectName("feedback");
+  feedback_->setWordWrap(true);
+  feedback_->hide();
+  outer->addWidget(feedback_);
+
   connect(&controller_, &StudyController::soundPlayed, this, [this](int index) {
     on_sound_played(index);
     refresh();
   });
   connect(&controller_, &StudyController::playingChanged, this, [this] { refresh(); });
-  auto* space = new QShortcut(QKeySequence(Qt::Key_Space), this);
-  connect(space, &QShortcut::activated, this, [this] { play_or_stop(); });
+  add_key(QKeySequence(Qt::Key_Space), [this] { play_or_stop(); });
 }
 
-QLabel* TrialView::add_prompt(const QString& text, QBoxLayout* into) {
-  auto* label = new QLabel(text, this);
+void TrialView::add_key(const QKeySequence& key, std::function<void()> action) {
+  auto* shortcut = new QShortcut(key, this);
+  connect(shortcut, &QShortcut::activated, this, std::move(action));
+}
+
+QLabel* TrialView::add_prompt(const QString& fallback, QBoxLayout* into) {
+  const std::string& written = controller_.block().prompt;
+  auto* label = new QLabel(written.empty() ? fallback : QString::fromStdString(written), body_);
   label->setObjectName("prompt");
   label->setWordWrap(true);
+  label->setMaximumWidth(readable_width(this));
   QFont f = label->font();
   f.setPointSizeF(f.pointSizeF() * 1.2);
   label->setFont(f);
@@ -28,16 +68,26 @@ QLabel* TrialView::add_prompt(const QString& text, QBoxLayout* into) {
   return label;
 }
 
+QLabel* TrialView::add_note(const QString& text, QBoxLayout* into) {
+  auto* label = new QLabel(text, body_);
+  label->setWordWrap(true);
+  label->setMaximumWidth(readable_width(this));
+  label->setStyleSheet("color: palette(dark)");
+  (into ? into : layout_)->addWidget(label);
+  return label;
+}
+
 QWidget* TrialView::add_sound_buttons(const QStringList& labels, bool seamless, bool with_loop, QBoxLayout* into,
                                       bool vertical) {
-  auto* box = new QWidget(this);
+  auto* box = new QWidget(body_);
   QBoxLayout* row = vertical ? static_cast<QBoxLayout*>(new QVBoxLayout(box)) : new QHBoxLayout(box);
   row->setContentsMargins(0, 0, 0, 0);
   for (int i = 0; i < labels.size(); ++i) {
-    auto* b = new QPushButton(QString::fromUtf8("\u25B6 ") + labels[i], box);
+    auto* b = new QPushButton(box);
     b->setObjectName(QString("play-%1").arg(i));
     b->setCheckable(true);
     b->setFocusPolicy(Qt::NoFocus);
+    b->setMinimumWidth(b->fontMetrics().horizontalAdvance(QString::fromUtf8("\u25B6 ") + labels[i] + " \u2713") + 16);
     const auto index = static_cast<std::size_t>(i);
     connect(b, &QPushButton::clicked, this, [this, index, seamless] { press_play(index, seamless); });
     row->addWidget(b);
@@ -52,23 +102,21 @@ QWidget* TrialView::add_sound_buttons(const QStringList& labels, bool seamless, 
   if (with_loop) {
     auto* loop = new QCheckBox("Loop", box);
     loop->setObjectName("loop");
+    loop->setFocusPolicy(Qt::NoFocus);
     connect(loop, &QCheckBox::toggled, this, [this](bool on) { controller_.set_loop(on); });
     row->addWidget(loop);
   }
   if (!vertical) row->addStretch();
   (into ? into : layout_)->addWidget(box);
-  if (digits_play_sounds_) {
-    for (int i = 0; i < labels.size() && i < 9; ++i) {
-      auto* key = new QShortcut(QKeySequence(Qt::Key_1 + i), this);
-      connect(key, &QShortcut::activated, this,
-              [this, i, seamless] { press_play(static_cast<std::size_t>(i), seamless); });
-    }
-  }
+  if (digits_play_sounds_)
+    for (int i = 0; i < labels.size() && i < 9; ++i)
+      add_key(QKeySequence(Qt::Key_1 + i), [this, i, seamless] { press_play(static_cast<std::size_t>(i), seamless); });
   refresh();
   return box;
 }
 
 void TrialView::press_play(std::size_t index, bool seamless) {
+  if (index >= play_buttons_.size() || !play_buttons_[index]->isEnabled()) return refresh();
   if (controller_.playing_index() == static_cast<int>(index)) controller_.stop();
   else if (seamless && controller_.playing()) controller_.switch_to(index);
   else controller_.play(index);
@@ -85,7 +133,7 @@ void TrialView::play_or_stop() {
 QButtonGroup* TrialView::add_choices(const QStringList& labels, const QStringList& names, QBoxLayout* into) {
   auto* group = new QButtonGroup(this);
   group->setExclusive(true);
-  auto* box = new QWidget(this);
+  auto* box = new QWidget(body_);
   auto* row = new QHBoxLayout(box);
   row->setContentsMargins(0, 0, 0, 0);
   for (int i = 0; i < labels.size(); ++i) {
@@ -95,10 +143,7 @@ QButtonGroup* TrialView::add_choices(const QStringList& labels, const QStringLis
     b->setMinimumHeight(40);
     group->addButton(b, i);
     row->addWidget(b);
-    if (i < 9) {
-      auto* key = new QShortcut(QKeySequence(Qt::Key_1 + i), this);
-      connect(key, &QShortcut::activated, b, [b] { if (b->isEnabled()) b->click(); });
-    }
+    if (i < 9) add_key(QKeySequence(Qt::Key_1 + i), [b] { if (b->isEnabled()) b->click(); });
   }
   connect(group, &QButtonGroup::idClicked, this, [this] { refresh(); });
   (into ? into : layout_)->addWidget(box);
@@ -107,44 +152,95 @@ QButtonGroup* TrialView::add_choices(const QStringList& labels, const QStringLis
 
 void TrialView::add_next(std::function<nlohmann::json()> answer, const QString& text) {
   add_next_action([this, answer = std::move(answer)] {
-    if (ready() && (!require_all_played_ || controller_.played_all())) controller_.submit(answer());
+    if (awaiting_continue_) {
+      controller_.submit(pending_answer_);
+      return;
+    }
+    if (!gate().may_send) return;
+    nlohmann::json value = answer();
+    const Block& block = controller_.block();
+    if (block.feedback && controller_.has_session()) {
+      if (const auto f = training_feedback(controller_.protocol(), block, controller_.trial(), value)) {
+        controller_.hold_reaction_time();  // the time to answer, not to read the feedback
+        controller_.stop();
+        pending_answer_ = std::move(value);
+        awaiting_continue_ = true;
+        body_->setEnabled(false);
+        show_feedback(QString::fromStdString(f->message), f->correct);
+        next_->setText(QString::fromUtf8("Continue  \u23CE"));
+        refresh();
+        return;
+      }
+    }
+    controller_.submit(value);
   }, text);
 }
 
 void TrialView::add_next_action(std::function<void()> on_next, const QString& text) {
   hint_ = new QLabel(this);
   hint_->setObjectName("hint");
+  hint_->setWordWrap(true);
+  hint_->setStyleSheet("color: #7a4a00");
   auto* row = new QHBoxLayout;
+  row->setContentsMargins(4, 0, 4, 4);
   row->addWidget(hint_, 1);
   next_ = new QPushButton(text + QString::fromUtf8("  \u23CE"), this);
   next_->setObjectName("next");
   next_->setDefault(true);
   next_->setMinimumWidth(120);
+  next_->setMinimumHeight(36);
   row->addWidget(next_);
   layout_->addStretch();
-  layout_->addLayout(row);
+  static_cast<QVBoxLayout*>(this->layout())->addLayout(row);
   connect(next_, &QPushButton::clicked, this, std::move(on_next));
-  for (const auto key : {Qt::Key_Return, Qt::Key_Enter}) {
-    auto* shortcut = new QShortcut(QKeySequence(key), this);
-    connect(shortcut, &QShortcut::activated, next_, [this] { if (next_->isEnabled()) next_->click(); });
-  }
+  for (const auto key : {Qt::Key_Return, Qt::Key_Enter})
+    add_key(QKeySequence(key), [this] { if (next_->isEnabled()) next_->click(); });
   refresh();
 }
 
+void TrialView::show_feedback(const QString& text, bool correct) {
+  feedback_->setText(text);
+  feedback_->setStyleSheet(correct ? "color: #1b6e20; font-weight: bold; padding: 4px"
+                                   : "color: #a02000; font-weight: bold; padding: 4px");
+  feedback_->setVisible(!text.isEmpty());
+}
+
+std::vector<bool> TrialView::heard() const {
+  std::vector<bool> out;
+  for (std::size_t i = 0; i < play_buttons_.size(); ++i) out.push_back(controller_.was_played(i));
+  return out;
+}
+
+AnswerGate TrialView::gate() const {
+  if (awaiting_continue_) return {true, ""};
+  if (!controller_.has_trial()) return {false, ""};  // a view left over after the last answer
+  TrialInputs in;
+  in.heard = heard();
+  in.moved = moved();
+  in.complete = ready();
+  in.why_incomplete = why_incomplete().toStdString();
+  return answer_gate(controller_.block(), in);
+}
+
 void TrialView::refresh() {
+  if (!controller_.has_trial()) return;
   const int playing = controller_.playing_index();
   for (std::size_t i = 0; i < play_buttons_.size(); ++i) {
+    const bool heard_it = controller_.was_played(i);
     play_buttons_[i]->setChecked(static_cast<int>(i) == playing);
-    play_buttons_[i]->setProperty("played", controller_.was_played(i));
+    play_buttons_[i]->setProperty("played", heard_it);
+    play_buttons_[i]->setText(QString::fromUtf8("\u25B6 ") + sound_labels_.value(static_cast<int>(i)) +
+                              (heard_it ? QString::fromUtf8(" \u2713") : QString()));
+    play_buttons_[i]->setToolTip(heard_it ? "heard" : "not heard yet");
   }
   if (!next_) return;
-  const bool listened = !require_all_played_ || controller_.played_all();
-  next_->setEnabled(ready() && listened);
-  if (hint_) hint_->setText(listened ? QString() : QString("Listen to every sound before answering."));
+  const AnswerGate g = gate();
+  next_->setEnabled(g.may_send);
+  if (hint_) hint_->setText(QString::fromStdString(g.missing));
 }
 
 TrialView* make_trial_view(StudyController& c, QWidget* parent) {
-  switch (c.session().current().type) {
+  switch (c.trial().type) {
     case BlockType::instructions: return make_instructions_view(c, parent);
     case BlockType::ab: return make_ab_view(c, parent);
     case BlockType::mushra: return make_mushra_view(c, parent);
@@ -161,8 +257,32 @@ TrialView* make_trial_view(StudyController& c, QWidget* parent) {
 
 std::vector<Sound> sounds_of(StudyController& c, const std::vector<std::string>& names) {
   std::vector<Sound> sounds;
-  for (const std::string& n : names) sounds.push_back(Sound{n, c.cache().samples(n)});
+  for (const std::string& n : names) sounds.push_back(Sound{n, c.samples(n)});
   return sounds;
+}
+
+QString task_title(const Block& block) {
+  switch (block.type) {
+    case BlockType::instructions: return "Instructions";
+    case BlockType::ab:
+      switch (std::get<AbBlock>(block.body).mode) {
+        case AbMode::same_different: return "Same or different?";
+        case AbMode::preference: return "Which do you prefer?";
+        case AbMode::abx: return "Which one is X?";
+        case AbMode::two_afc: return "Find the odd sound";
+        case AbMode::bipolar: return "Compare two sounds";
+      }
+      break;
+    case BlockType::mushra: return "Rate the sound quality";
+    case BlockType::magnitude: return "How different?";
+    case BlockType::identify: return "What do you hear?";
+    case BlockType::rating: return "Describe the sound";
+    case BlockType::adjust: return "Adjust the sound";
+    case BlockType::staircase: return "Spot the difference";
+    case BlockType::questionnaire: return "A few questions";
+    case BlockType::unknown: break;
+  }
+  return "Listening test";
 }
 
 }  // namespace ms::gui

@@ -104,7 +104,7 @@ inline bool start_window(ms::gui::MainWindow& w) {
 
 struct DriveLog {
   std::vector<double> resynth_ms;            // adjust: slider move -> new sound ready
-  std::vector<std::string> listen_rule;      // views whose Next was disabled before listening
+  std::vector<std::string> listen_rule;      // trials whose Next was disabled until every sound was heard
   std::set<ms::BlockType> seen;
   int trials = 0, breaks = 0, staircase_steps = 0;
   bool used_keys = false;                    // shortcuts (Enter, 1..n) took effect
@@ -131,13 +131,15 @@ inline void answer_trial(ms::gui::MainWindow& w, DriveLog& log) {
       else QTest::mouseClick(next, Qt::LeftButton);
       return;
     case ms::BlockType::ab: {
-      play_all();
       if (auto bipolar = children_with_prefix<QAbstractButton>(view, "bipolar-1"); !bipolar.empty()) {
         press(bipolar[0]);
       } else {
         QTest::keyClick(view, Qt::Key_1);  // 1 = first choice
-        if (!next->isEnabled()) QTest::mouseClick(children_with_prefix<QAbstractButton>(view, "choice-")[0], Qt::LeftButton);
+        auto* first = children_with_prefix<QAbstractButton>(view, "choice-")[0];
+        if (!first->isChecked()) QTest::mouseClick(first, Qt::LeftButton);
       }
+      if (!next->isEnabled()) log.listen_rule.push_back("ab");  // answered, but nothing heard yet
+      play_all();
       QTest::keyClick(view, Qt::Key_Return);
       if (!moved_on()) QTest::mouseClick(next, Qt::LeftButton);
       return;
@@ -156,8 +158,9 @@ inline void answer_trial(ms::gui::MainWindow& w, DriveLog& log) {
     case ms::BlockType::magnitude: {
       auto* entry = child<QLineEdit>(view, "magnitude");
       QTest::keyClicks(entry, "50");
+      if (!next->isEnabled()) log.listen_rule.push_back("magnitude");
       const auto buttons = children_with_prefix<QPushButton>(view, "play-");
-      if (buttons.size() == 4 && !buttons[2]->isEnabled()) log.listen_rule.push_back("magnitude");
+      if (buttons.size() == 4) EXPECT_FALSE(buttons[2]->isEnabled()) << "the pair before the reference pair";
       play_all();
       play_all();  // the pair becomes playable after the modulus pair
       QTest::keyClick(entry, Qt::Key_Return);
@@ -165,8 +168,9 @@ inline void answer_trial(ms::gui::MainWindow& w, DriveLog& log) {
       return;
     }
     case ms::BlockType::identify:
-      play_all();
       QTest::mouseClick(children_with_prefix<QAbstractButton>(view, "choice-")[0], Qt::LeftButton);
+      if (!next->isEnabled()) log.listen_rule.push_back("identify");
+      play_all();
       QTest::mouseClick(next, Qt::LeftButton);
       return;
     case ms::BlockType::rating: {
@@ -179,6 +183,7 @@ inline void answer_trial(ms::gui::MainWindow& w, DriveLog& log) {
     }
     case ms::BlockType::adjust: {
       wait_until([&] { return view->property("renders").toInt() >= 1; });
+      if (!next->isEnabled()) log.listen_rule.push_back("adjust");  // the sound is ready but not heard
       auto* slider = children_with_prefix<QSlider>(view, "adjust-")[0];
       for (int move = 0; move < 5; ++move) {
         const int before = view->property("renders").toInt();
@@ -195,8 +200,9 @@ inline void answer_trial(ms::gui::MainWindow& w, DriveLog& log) {
       for (int step = 0; step < 100 && !moved_on(); ++step) {
         auto* play0 = child<QPushButton>(view, "play-0");
         wait_until([&] { return play0->isEnabled(); });
-        play_all();
         QTest::mouseClick(children_with_prefix<QAbstractButton>(view, "choice-A")[0], Qt::LeftButton);
+        if (step == 0 && !next->isEnabled()) log.listen_rule.push_back("staircase");
+        play_all();
         QTest::mouseClick(next, Qt::LeftButton);
         ++log.staircase_steps;
       }
