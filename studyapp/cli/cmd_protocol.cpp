@@ -30,11 +30,13 @@ void run_check(const ProtocolOptions& o) {
   if (o.json) {
     nlohmann::json j;
     j["problems"] = c.problems;
+    j["warnings"] = c.warnings;
     j["blocks"] = c.protocol ? c.protocol->blocks.size() : 0;
     j["stimuli"] = c.protocol ? c.protocol->stimuli.size() : 0;
     std::cout << j.dump(2) << "\n";
   } else {
     for (const auto& p : c.problems) std::cerr << p << "\n";
+    for (const auto& w : c.warnings) std::cerr << w << "\n";
     if (c.problems.empty())
       std::cout << o.file << ": OK (" << c.protocol->blocks.size() << " blocks, " << c.protocol->stimuli.size()
                 << " stimuli)\n";

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <map>
 
+#include "studyapp/core/protocol_parser.hpp"
 #include "studyapp/core/results_store.hpp"
 #include "studyapp/core/tidy_tables.hpp"
 #include "synthesis/atomic_file.hpp"
@@ -61,12 +62,15 @@ ExportSummary export_results(const std::string& db_path, const std::string& out_
   const ResultsStore store(db_path, ResultsStore::Mode::read_only);
   const auto rows = store.response_rows();
 
-  std::string csv = "study,participant,session,block,block_type,trial,stimuli,response,rt_ms,plays,timestamp\r\n";
+  const std::vector<std::string> columns{"study", "participant", "session", "autopilot", "block", "block_type",
+                                         "trial", "stimuli", "response", "rt_ms", "plays", "timestamp"};
+  std::string csv = csv::line(columns);
   for (const ResponseRow& r : rows) {
     const std::string participant = exported_participant(r.participant_code, r.participant, r.export_personal);
     const std::string cells[] = {r.study,
                                  participant,
                                  std::to_string(r.session),
+                                 r.autopilot ? "1" : "0",
                                  r.block_id,
                                  r.block_type,
                                  std::to_string(r.trial_index),
@@ -94,7 +98,16 @@ ExportSummary export_results(const std::string& db_path, const std::string& out_
     events_csv += csv::line({e.study, exported_participant(e.participant_code, e.participant, e.export_personal),
                             std::to_string(e.session), e.block_id, e.block_type, std::to_string(e.trial_index), e.kind,
                             e.stimulus, e.stimulus_hash, e.detail_json, iso8601_utc(e.timestamp_ms)});
-  const auto tables = tidy_tables(rows);
+  // The stored protocol texts say what the responses do not (truth, factors, moduli, staircase rules).
+  std::map<std::string, Protocol> protocols;
+  for (const StudyRecord& s : store.studies()) {
+    try {
+      protocols.emplace(s.id, parse_protocol(s.protocol_text, s.id + " (stored protocol)", "."));
+    } catch (const InputError&) {
+      // A protocol this version cannot read: its tables get empty truth and factor cells.
+    }
+  }
+  const auto tables = tidy_tables(rows, protocols);
 
   std::map<std::string, std::size_t> per_study;
   for (const ResponseRow& r : rows) ++per_study[r.study];
@@ -117,8 +130,7 @@ ExportSummary export_results(const std::string& db_path, const std::string& out_
         {"trials", store.count("trials")},
         {"responses", store.count("responses")},
         {"events", store.count("events")}}},
-      {"columns", {"study", "participant", "session", "block", "block_type", "trial", "stimuli", "response", "rt_ms",
-                   "plays", "timestamp"}}};
+      {"columns", columns}};
 
   std::error_code ec;
   std::filesystem::create_directories(out_dir, ec);

@@ -64,6 +64,7 @@ struct MushraBlock {
 };
 struct MagnitudeBlock {
   std::optional<StimulusPair> modulus;
+  double modulus_value = 100;        // the number the modulus pair stands for (exported; `stats magnitude` reads it)
   bool all_pairs = false;            // every unordered pair of `stimuli`
   bool identical_pairs = false;      // with all_pairs: also each stimulus against itself (2002 study)
   std::vector<StimulusPair> pairs;

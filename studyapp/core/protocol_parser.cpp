@@ -184,9 +184,10 @@ BlockBody parse_body(const YamlReader& r, const YAML::Node& n, const std::string
     }
     case BlockType::magnitude: {
       r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "modulus", "pairs",
-                          "stimuli", "listen_all", "prompt", "feedback"});
+                          "stimuli", "listen_all", "prompt", "feedback", "modulus_value"});
       MagnitudeBlock g;
       g.modulus = pair(r, req("modulus"), p + ".modulus");
+      if (n["modulus_value"]) g.modulus_value = r.positive(n["modulus_value"], p + ".modulus_value");
       g.stimuli = refs(r, n["stimuli"], p + ".stimuli");
       const YAML::Node pr = n["pairs"];
       if (!pr || (pr.IsScalar() && pr.Scalar() == "all")) {

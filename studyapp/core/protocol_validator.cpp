@@ -187,6 +187,25 @@ Confinement protocol_confinement(const Protocol& p, const ValidateOptions& optio
                              "use --allow-outside or allow_outside: true");
 }
 
+std::vector<std::string> protocol_warnings(const Protocol& p) {
+  std::vector<std::string> out;
+  for (const Block& b : p.blocks) {
+    const auto* m = std::get_if<MushraBlock>(&b.body);
+    if (!m || !m->auto_anchors || !m->reference) continue;
+    for (const StimulusRef& c : m->conditions) {
+      const StimulusSource* s = p.find_stimulus(c.name);
+      if (!s || s->implicit || s->kind != StimulusKind::derived || s->derive_from.name != m->reference->name) continue;
+      for (double hz : {3500.0, 7000.0})
+        if (s->lowpass_hz == hz)
+          out.push_back(at(c.where, "warning: block '" + b.id + "': condition '" + c.name + "' is the " +
+                                        (hz == 3500.0 ? "3.5" : "7") + " kHz low-pass of '" + m->reference->name +
+                                        "', which `anchors: auto` adds as '" + anchor_name(m->reference->name, hz) +
+                                        "': the same sound is rated twice"));
+    }
+  }
+  return out;
+}
+
 ProtocolCheck check_protocol_file(const std::string& path, const ValidateOptions& options) {
   ProtocolCheck c;
   try {
@@ -199,6 +218,7 @@ ProtocolCheck check_protocol_file(const std::string& path, const ValidateOptions
   if (options.allow_outside) c.protocol->allow_outside = true;
   const auto more = validate_protocol(*c.protocol, options);
   c.problems.insert(c.problems.end(), more.begin(), more.end());
+  c.warnings = protocol_warnings(*c.protocol);
   return c;
 }
 

@@ -30,7 +30,13 @@ Confinement protocol_confinement(const Protocol& p, const ValidateOptions& optio
 struct ProtocolCheck {
   std::optional<Protocol> protocol;
   std::vector<std::string> problems;
+  std::vector<std::string> warnings;  // legal but probably unintended (protocol_warnings)
 };
+
+// Legal constructs that are probably mistakes, one line each (file:line:column): a stimulus equal to
+// an automatic MUSHRA anchor (`anchors: auto` already plays the 3.5 and 7 kHz low-passes, so the
+// listener would rate the same sound twice).
+std::vector<std::string> protocol_warnings(const Protocol& p);
 ProtocolCheck check_protocol_file(const std::string& path, const ValidateOptions& options = {});
 
 }  // namespace ms

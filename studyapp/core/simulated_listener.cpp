@@ -116,7 +116,7 @@ SimulatedAnswer SimulatedListener::answer(const Block& block, const Trial& trial
       const double d_mod = m.modulus ? distance_db(m.modulus->at(0).name, m.modulus->at(1).name) : 3.0;
       const double d = noisy(distance_db(s.at(0), s.at(1)));
       const double ratio = (d + 0.5) / (d_mod + 0.5) * std::exp(0.1 * unit(rng_));
-      a.value = std::max(1.0, std::round(100.0 * ratio));
+      a.value = std::max(1.0, std::round(m.modulus_value * ratio));
       a.rt_ms = rt(d) + 1500.0;
       break;
     }

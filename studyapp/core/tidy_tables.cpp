@@ -3,6 +3,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+
+#include "studyapp/core/staircase_track.hpp"
 #include "synthesis/csv.hpp"
 
 namespace ms {
@@ -16,39 +19,104 @@ std::string cell(const nlohmann::json& v) {
   return v.dump();
 }
 
+const std::vector<std::string> kBase{"study", "participant", "session", "autopilot", "block", "trial"};
+
+const std::map<std::string, std::vector<std::string>>& type_columns() {
+  static const std::map<std::string, std::vector<std::string>> c{
+      {"ab", {"stimulus_a", "stimulus_b", "stimulus_x", "response", "correct"}},
+      {"mushra", {"condition", "rating"}},
+      {"magnitude", {"first", "second", "value", "modulus_a", "modulus_b", "modulus_value"}},
+      {"identify", {"stimulus", "truth", "response", "correct"}},
+      {"rating", {"stimulus", "attribute", "value"}},
+      {"adjust", {"stimulus", "key", "value", "plays", "rt_ms"}},
+      {"staircase", {"stimulus", "parameter", "step", "level", "next_level", "correct", "threshold"}},
+      {"questionnaire", {"question", "answer"}}};
+  return c;
+}
+
+// Factor names over every protocol, in file order.
+std::vector<std::string> factor_names(const std::map<std::string, Protocol>& protocols) {
+  std::vector<std::string> names;
+  for (const auto& [id, p] : protocols)
+    for (const StimulusSource& s : p.stimuli)
+      for (const auto& [name, level] : s.factors)
+        if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  return names;
+}
+
+std::string factor_of(const StimulusSource* s, const std::string& name) {
+  if (!s) return "";
+  for (const auto& [n, level] : s->factors)
+    if (n == name) return level;
+  return "";
+}
+
+const Block* find_block(const Protocol* p, const std::string& id) {
+  if (!p) return nullptr;
+  for (const Block& b : p->blocks)
+    if (b.id == id) return &b;
+  return nullptr;
+}
+
 }  // namespace
+
+const std::vector<std::string>& tidy_key_columns() { return kBase; }
 
 std::string exported_participant(const std::string& code, std::int64_t id, bool export_personal) {
   // Codes are often names or initials: opaque ids unless the study allows personal fields.
   return export_personal ? code : "p" + std::to_string(id);
 }
 
-std::map<std::string, std::string> tidy_tables(const std::vector<ResponseRow>& rows) {
-  const std::vector<std::string> key{"study", "participant", "session", "block", "trial"};
-  const std::map<std::string, std::vector<std::string>> columns{
-      {"ab", {"stimulus_a", "stimulus_b", "stimulus_x", "response", "correct"}},
-      {"mushra", {"condition", "rating"}},
-      {"magnitude", {"first", "second", "value"}},
-      {"identify", {"stimulus", "response", "correct"}},
-      {"rating", {"stimulus", "attribute", "value"}},
-      {"adjust", {"stimulus", "key", "value", "plays", "rt_ms"}},
-      {"staircase", {"stimulus", "parameter", "step", "level", "correct", "threshold"}},
-      {"questionnaire", {"question", "answer"}}};
+std::string identify_truth(const StimulusSource* stimulus, const std::string& stimulus_name, const Block& block) {
+  const auto* ib = std::get_if<IdentifyBlock>(&block.body);
+  const std::vector<std::string> labels = ib ? ib->labels : std::vector<std::string>{};
+  const auto is_label = [&](const std::string& v) { return std::find(labels.begin(), labels.end(), v) != labels.end(); };
+  if (stimulus && !stimulus->truth.empty()) {
+    for (const auto& [attribute, label] : stimulus->truth)
+      if (attribute.empty() || attribute == block.id) return label;
+    std::string found;
+    int matches = 0;
+    for (const auto& [attribute, label] : stimulus->truth)
+      if (is_label(label)) {
+        found = label;
+        ++matches;
+      }
+    return matches == 1 ? found : "";
+  }
+  return is_label(stimulus_name) ? stimulus_name : "";
+}
+
+std::map<std::string, std::string> tidy_tables(const std::vector<ResponseRow>& rows,
+                                               const std::map<std::string, Protocol>& protocols) {
+  std::vector<std::string> factors = factor_names(protocols);
   std::map<std::string, std::string> out;
   for (const ResponseRow& r : rows) {
-    const auto cols = columns.find(r.block_type);
-    if (cols == columns.end()) continue;  // instructions
+    const auto cols = type_columns().find(r.block_type);
+    if (cols == type_columns().end()) continue;  // instructions
+    const auto pit = protocols.find(r.study);
+    const Protocol* protocol = pit == protocols.end() ? nullptr : &pit->second;
+    const Block* block = find_block(protocol, r.block_id);
     std::string& csv = out[r.block_type + ".csv"];
     if (csv.empty()) {
-      std::vector<std::string> header = key;
+      std::vector<std::string> header = kBase;
       header.insert(header.end(), cols->second.begin(), cols->second.end());
+      // A factor named like a column gets a suffix rather than a duplicate column.
+      for (const std::string& f : factors)
+        header.push_back(std::find(header.begin(), header.end(), f) == header.end() ? f : f + "_factor");
       csv = csv::line(header);
     }
     const std::vector<std::string> k{r.study, exported_participant(r.participant_code, r.participant, r.export_personal),
-                                     std::to_string(r.session), r.block_id, std::to_string(r.trial_index)};
-    auto add = [&](const std::vector<std::string>& rest) {
+                                     std::to_string(r.session), r.autopilot ? "1" : "0", r.block_id,
+                                     std::to_string(r.trial_index)};
+    const auto stimulus = [&](const std::string& name) { return protocol ? protocol->find_stimulus(name) : nullptr; };
+    // The factor cells of a row about one stimulus, or of a pair (the level both share, else empty).
+    const auto add = [&](std::vector<std::string> rest, const std::string& a, const std::string& b = "") {
       std::vector<std::string> line = k;
       line.insert(line.end(), rest.begin(), rest.end());
+      for (const std::string& f : factors) {
+        const std::string la = factor_of(stimulus(a), f);
+        line.push_back(b.empty() || factor_of(stimulus(b), f) == la ? la : "");
+      }
       csv += csv::line(line);
     };
     const auto s = nlohmann::json::parse(r.stimuli_json);
@@ -58,26 +126,44 @@ std::map<std::string, std::string> tidy_tables(const std::vector<ResponseRow>& r
       // ABX stores A, B, X: the answer is correct when the chosen one is X.
       std::string correct = "NA";
       if (s.size() == 3 && v.is_string()) correct = ((v == "A" ? at(0) : at(1)) == at(2)) ? "1" : "0";
-      add({at(0), at(1), at(2), cell(v), correct});
+      add({at(0), at(1), at(2), cell(v), correct}, at(0), at(1));
     } else if (r.block_type == "mushra") {
       // The hidden reference is rated under its own name (`stats mushra --reference NAME`).
-      for (const auto& [name, score] : v.items()) add({name, cell(score)});
+      for (const auto& [name, score] : v.items()) add({name, cell(score)}, name);
     } else if (r.block_type == "magnitude") {
-      add({at(0), at(1), cell(v)});
+      const auto* mb = block ? std::get_if<MagnitudeBlock>(&block->body) : nullptr;
+      std::vector<std::string> modulus{"", "", "NA"};
+      if (mb && mb->modulus) modulus = {(*mb->modulus)[0].name, (*mb->modulus)[1].name, csv::number(mb->modulus_value)};
+      add({at(0), at(1), cell(v), modulus[0], modulus[1], modulus[2]}, at(0), at(1));
     } else if (r.block_type == "identify") {
-      add({at(0), cell(v), at(0) == cell(v) ? "1" : "0"});
+      const std::string truth = block ? identify_truth(stimulus(at(0)), at(0), *block) : "";
+      add({at(0), truth, cell(v), truth.empty() ? "NA" : (truth == cell(v) ? "1" : "0")}, at(0));
     } else if (r.block_type == "rating") {
-      for (const auto& [attr, value] : v.items()) add({at(0), attr, cell(value)});
+      for (const auto& [attr, value] : v.items()) add({at(0), attr, cell(value)}, at(0));
     } else if (r.block_type == "adjust") {
       for (const auto& [k2, value] : v.items())
-        add({at(0), k2, cell(value), std::to_string(r.plays), nlohmann::json(r.rt_ms).dump()});
+        add({at(0), k2, cell(value), std::to_string(r.plays), nlohmann::json(r.rt_ms).dump()}, at(0));
     } else if (r.block_type == "staircase") {
       const auto& levels = v.at("levels");
       const auto& correct = v.at("correct");
+      // Where the track moved after each answer (the rule replayed), so the last trial's reversal counts.
+      std::vector<std::string> next(levels.size(), "NA");
+      for (std::size_t i = 0; i + 1 < levels.size(); ++i) next[i] = cell(levels[i + 1]);
+      if (const auto* sb = block ? std::get_if<StaircaseBlock>(&block->body) : nullptr) {
+        StaircaseTrack track(sb->start, sb->step, sb->down, sb->up, sb->reversals);
+        bool same = true;
+        for (std::size_t i = 0; i < levels.size() && i < correct.size(); ++i) {
+          same = same && levels[i].is_number() && track.level() == levels[i].get<double>();
+          track.record(correct[i].is_boolean() ? correct[i].get<bool>() : correct[i] == 1);
+        }
+        if (same && !levels.empty()) next.back() = csv::number(track.level());
+      }
       for (std::size_t i = 0; i < levels.size(); ++i)
-        add({at(0), v.value("parameter", ""), std::to_string(i), cell(levels[i]), cell(correct[i]), cell(v.at("threshold"))});
+        add({at(0), v.value("parameter", ""), std::to_string(i), cell(levels[i]), next[i], cell(correct[i]),
+             cell(v.at("threshold"))},
+            at(0));
     } else if (r.block_type == "questionnaire") {
-      for (const auto& [q, answer] : v.items()) add({q, cell(answer)});
+      for (const auto& [q, answer] : v.items()) add({q, cell(answer)}, "");
     }
   }
   return out;

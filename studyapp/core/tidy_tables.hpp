@@ -1,19 +1,34 @@
 // Per-block-type tidy tables made from the stored responses, one row per observation, in the column
 // names the `modalstudy stats` commands read by default (mushra.csv: participant, trial, condition,
-// rating; identify.csv: stimulus, response; staircase.csv: one row per step; ...).
+// rating; identify.csv: stimulus, truth, response, correct; staircase.csv: one row per step; ...).
+// The protocol of each study adds what the responses alone do not say: the identification truth,
+// the stimuli's design factors (one column each), the modulus of magnitude blocks and where a
+// staircase moved after its last answer.
 #pragma once
 #include <map>
 #include <string>
 #include <vector>
 
+#include "studyapp/core/protocol.hpp"
 #include "studyapp/core/results_store.hpp"
 
 namespace ms {
 
+// The key columns every table starts with.
+const std::vector<std::string>& tidy_key_columns();  // study, participant, session, autopilot, block, trial
+
 // File name (e.g. "mushra.csv") -> RFC 4180 CSV text; only types that have responses appear.
-std::map<std::string, std::string> tidy_tables(const std::vector<ResponseRow>& rows);
+// `protocols` maps a study id to its parsed protocol; a study without one gets empty truth and
+// factor cells (and NA for what only the protocol knows).
+std::map<std::string, std::string> tidy_tables(const std::vector<ResponseRow>& rows,
+                                               const std::map<std::string, Protocol>& protocols = {});
 
 // The participant as exported: the code if the study allows personal fields, else "p<id>".
 std::string exported_participant(const std::string& code, std::int64_t id, bool export_personal);
+
+// The label an identify block expects for a stimulus: its `truth:` label, or the value of its truth
+// map under the block's id, or the one value of the map that is among the block's labels; with no
+// truth, the stimulus name when it is one of the labels; else "".
+std::string identify_truth(const StimulusSource* stimulus, const std::string& stimulus_name, const Block& block);
 
 }  // namespace ms

@@ -50,13 +50,13 @@ TEST(ExportCli, EveryCellOfResponsesCsv) {
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const std::string csv_path = dir.file("out/responses.csv");
   const TidyCsv csv = TidyCsv::read(csv_path);
-  const std::vector<std::string> header{"study", "participant", "session", "block",    "block_type", "trial",
-                                        "stimuli", "response",  "rt_ms",   "plays", "timestamp"};
+  const std::vector<std::string> header{"study",   "participant", "session", "autopilot", "block", "block_type",
+                                        "trial",   "stimuli",     "response", "rt_ms",    "plays", "timestamp"};
   EXPECT_EQ(csv.header(), header);
   const std::vector<std::vector<std::string>> expected{
-      {"vase", "p1", "1", "id1", "identify", "0", "metal", "metal", "812.5", "2", "2023-11-14T22:13:21.500Z"},
-      {"vase", "p1", "1", "id1", "identify", "1", "glass", "wood", "1033.0", "1", "2023-11-14T22:13:22.750Z"},
-      {"vase", "p1", "1", "m1", "mushra", "0", "full;e16;lp35", R"({"e16":80,"full":100,"lp35":"say \"hi\""})",
+      {"vase", "p1", "1", "0", "id1", "identify", "0", "metal", "metal", "812.5", "2", "2023-11-14T22:13:21.500Z"},
+      {"vase", "p1", "1", "0", "id1", "identify", "1", "glass", "wood", "1033.0", "1", "2023-11-14T22:13:22.750Z"},
+      {"vase", "p1", "1", "0", "m1", "mushra", "0", "full;e16;lp35", R"({"e16":80,"full":100,"lp35":"say \"hi\""})",
        "15000.25", "7", "2023-11-14T22:13:40.001Z"}};
   ASSERT_EQ(csv.rows(), expected.size());
   for (std::size_t i = 0; i < expected.size(); ++i)
@@ -67,7 +67,7 @@ TEST(ExportCli, EveryCellOfResponsesCsv) {
   EXPECT_NE(text.find(R"("{""e16"":80,""full"":100,""lp35"":""say \""hi\""""}")"), std::string::npos) << text;
   EXPECT_EQ(text.find("Doe"), std::string::npos);
   EXPECT_EQ(text.substr(0, text.find('\n') + 1),
-            "study,participant,session,block,block_type,trial,stimuli,response,rt_ms,plays,timestamp\r\n");
+            "study,participant,session,autopilot,block,block_type,trial,stimuli,response,rt_ms,plays,timestamp\r\n");
 
   const auto meta = nlohmann::json::parse(slurp(dir.file("out/study.json")));
   EXPECT_EQ(meta["studies"][0]["id"], "vase");
