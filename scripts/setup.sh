@@ -11,7 +11,8 @@ packages=(build-essential cmake ninja-build pkg-config
           qt6-base-dev qt6-charts-dev qt6-svg-dev qt6-multimedia-dev libgl-dev
           xvfb xauth  # the GUI screenshot test runs under xvfb-run when it is there
           hydrogen-drumkits  # real struck-metal recordings for the model-audit tests (~140 MB)
-          libqt6opengl6-dev)  # Qt6Charts' CMake config needs Qt6OpenGL; Debian 12 does not pull it in
+          libqt6opengl6-dev  # Qt6Charts' CMake config needs Qt6OpenGL; Debian 12 does not pull it in
+          clang libclang-rt-dev)  # scripts/fuzz.sh: libFuzzer and the sanitizers' runtimes
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -152,10 +152,10 @@ SimulatedAnswer SimulatedListener::answer(const Block& block, const Trial& trial
       break;
     }
     case BlockType::adjust: {
-      // Tunes each slider in turn to the value (of 5 tried) that sounds closest to the stimulus as
-      // the protocol defines it, as a listener matching a target by ear would.
+      // Tunes each slider in turn to the value (of 5 tried) that sounds closest to the block's target
+      // (default: the stimulus as the protocol defines it), as a listener matching a target by ear would.
       const auto& adj = std::get<AdjustBlock>(block.body);
-      const PerceptualProfile target = profile(adj.paramset.name);
+      const PerceptualProfile target = profile(adj.target ? adj.target->name : adj.paramset.name);
       nlohmann::json values = nlohmann::json::object();
       a.plays = 0;
       for (const auto& slider : adj.sliders) {
