@@ -11,13 +11,15 @@
 
 #include "analysis/audit/audit.hpp"
 #include "analysis/audit/augmented_paramset.hpp"
+#include "analysis/audit/gap_location.hpp"
+#include "analysis/audit/given_model.hpp"
+#include "analysis/damping_features.hpp"
 #include "studyapp/cli/commands.hpp"
 #include "studyapp/plots/plots.hpp"
 #include "synthesis/atomic_file.hpp"
 #include "synthesis/audio_file.hpp"
 #include "synthesis/input_error.hpp"
 #include "synthesis/paramset.hpp"
-#include "synthesis/stimulus.hpp"
 
 namespace ms::cli {
 
@@ -53,17 +55,10 @@ nlohmann::json result_json(const AuditResult& r, const audit::AuditData& data) {
   for (std::size_t s = 0; s < r.strikes; ++s)
     strikes.push_back({{"strike", data.measured.strikes[s].name}, {"gap_before", r.location.strike_gap_db[s]},
                        {"gap_after", r.after[s].gap_db}, {"gain_db", r.strike_gain_db[s]}});
-  // The three worst Bark bands and the worst 100 ms span of the baseline.
-  std::vector<std::size_t> bands(r.location.band_gap_db.size());
-  for (std::size_t b = 0; b < bands.size(); ++b) bands[b] = b;
-  std::sort(bands.begin(), bands.end(), [&](auto a, auto b) { return r.location.band_gap_db[a] > r.location.band_gap_db[b]; });
+  // The three worst Bark bands and the worst frame of the baseline.
   nlohmann::json worst_bands = nlohmann::json::array();
-  for (std::size_t i = 0; i < bands.size() && i < 3; ++i)
-    worst_bands.push_back({{"bark", bands[i]}, {"centre_hz", std::round(g.band_centre_hz(bands[i]))},
-                           {"gap", r.location.band_gap_db[bands[i]]}});
-  std::size_t worst_frame = 0;
-  for (std::size_t f = 0; f < r.location.time_gap_db.size(); ++f)
-    if (r.location.time_gap_db[f] > r.location.time_gap_db[worst_frame]) worst_frame = f;
+  for (std::size_t b : audit::worst_bands(r.location, 3))
+    worst_bands.push_back({{"bark", b}, {"centre_hz", std::round(g.band_centre_hz(b))}, {"gap", r.location.band_gap_db[b]}});
   nlohmann::json worst_modes = nlohmann::json::array();
   for (std::size_t n : r.location.worst_modes) worst_modes.push_back(std::round(r.baseline.modes[n].freq_hz * 10) / 10);
   // Per-mode residuals of the baseline, per strike (measured - model).
@@ -84,27 +79,12 @@ nlohmann::json result_json(const AuditResult& r, const audit::AuditData& data) {
           {"rounds", rounds},
           {"locate", {{"strikes", strikes},
                       {"worst_bands", worst_bands},
-                      {"worst_time_s", g.frame_time_s(worst_frame)},
+                      {"worst_time_s", g.frame_time_s(audit::worst_frame(r.location))},
                       {"worst_modes_hz", worst_modes},
                       {"decay_spread", r.decay_spread},
                       {"strike_variation_db", data.strike_variation_db},
                       {"mode_residuals", residuals}}},
           {"untested", untested}};
-}
-
-// Mean signed difference over strikes per (band, frame); NaN where no strike has a value.
-std::vector<std::vector<double>> mean_map(const std::vector<audit::GapMap>& maps) {
-  const std::size_t bands = maps.front().bands, frames = maps.front().frames;
-  std::vector<std::vector<double>> out(bands, std::vector<double>(frames, NAN));
-  for (std::size_t b = 0; b < bands; ++b)
-    for (std::size_t f = 0; f < frames; ++f) {
-      double sum = 0.0;
-      int n = 0;
-      for (const auto& m : maps)
-        if (!std::isnan(m.diff_db[f * bands + b])) { sum += m.diff_db[f * bands + b]; ++n; }
-      if (n > 0) out[b][f] = sum / n;
-    }
-  return out;
 }
 
 std::vector<plots::XY> law_curve(const DampingLaw& law, double lo, double hi) {
@@ -127,10 +107,10 @@ void write_report(const std::string& dir, const AuditResult& r, const audit::Aud
   char title[200];
   std::snprintf(title, sizeof title, "Residual, baseline (model - measured, mean over strikes): gap %.2f dB", r.gap_before_db);
   o.title = title;
-  plots::residual_map((d / "residual_before.png").string(), mean_map(r.before), duration, 20.0, o);
+  plots::residual_map((d / "residual_before.png").string(), audit::mean_gap_map(r.before), duration, 20.0, o);
   std::snprintf(title, sizeof title, "Residual, with the named effects: gap %.2f dB", r.gap_after_db);
   o.title = title;
-  plots::residual_map((d / "residual_after.png").string(), mean_map(r.after), duration, 20.0, o);
+  plots::residual_map((d / "residual_after.png").string(), audit::mean_gap_map(r.after), duration, 20.0, o);
   // Per-mode residuals: amplitude (dB) and decay (%) against frequency, before and after.
   auto series = [](const std::vector<audit::ModeResidual>& res, bool amp, const std::string& name) {
     plots::Series s{name, {}};
@@ -152,8 +132,9 @@ void write_report(const std::string& dir, const AuditResult& r, const audit::Aud
   for (const auto& t : data.tracks)
     for (const auto& ob : t.strikes)
       if (ob.present) {
-        lambda.push_back(std::pow(2.0 * M_PI * ob.freq_hz, 2) + ob.decay_per_s * ob.decay_per_s);
-        c.push_back(2.0 * ob.decay_per_s);
+        const DampingPoint p = damping_point(ob.freq_hz, ob.decay_per_s);
+        lambda.push_back(p.lambda_rad2_s2);
+        c.push_back(p.c_per_s);
       }
   const double lo = *std::min_element(lambda.begin(), lambda.end()), hi = *std::max_element(lambda.begin(), lambda.end());
   std::vector<plots::Series> laws;
@@ -213,17 +194,7 @@ void register_audit(CLI::App& app) {
     try {
       const audit::AuditData data = audit::make_audit_data(recordings, options);
       std::optional<ModalModel> model;
-      if (given) {
-        if (given->sample_rate_hz != data.measured.sample_rate_hz)
-          throw audit::AuditError(opt->model + ": sample rate " + std::to_string(std::lround(given->sample_rate_hz)) +
-                                  " Hz differs from the recordings' " +
-                                  std::to_string(std::lround(data.measured.sample_rate_hz)) + " Hz");
-        std::vector<std::string> warnings;
-        model = audible_model(*given, warnings);
-        // The audit's modes are what sounds after the strike: fold the set's contact and gain in.
-        for (Mode& m : model->modes)
-          m.amp *= given->excitation.gain * std::abs(contact_factor(given->excitation, m.decay_per_s, m.freq_hz));
-      }
+      if (given) model = audit::given_model(*given, opt->model, data.measured.sample_rate_hz);
       const AuditResult r = audit::run_audit(data, model, options);
       const nlohmann::json j = result_json(r, data);
       if (!opt->report.empty()) write_report(opt->report, r, data, j);
