@@ -492,3 +492,48 @@ TEST(CliStatsLimits, VanDenDoel2002Experiment1) {
   EXPECT_EQ(b.exit_code, 2);
   EXPECT_NE(b.err.find("bad.csv:3:3"), std::string::npos) << b.err;
 }
+
+// Intervals past the 0-100 scale are reported as computed and marked, with a notice.
+TEST(CliStatsMushra, IntervalPastTheScaleIsMarkedNotClipped) {
+  test::TempDir dir;
+  // ref: 100, 100, 90 -> mean 96.67, sd 5.774, t(2; .975) = 4.303: [82.32, 111.01].
+  const std::string f = dir.write("m.csv", "participant,trial,condition,rating\n"
+                                           "a,1,ref,100\na,1,low,20\nb,1,ref,100\nb,1,low,30\nc,1,ref,90\nc,1,low,25\n");
+  const auto j = test::run_cli("stats mushra " + f + " --reference ref --json", dir);
+  ASSERT_EQ(j.exit_code, 0) << j.err;
+  const auto out = nlohmann::json::parse(j.out);
+  const auto& ref = out["conditions"][0];
+  ASSERT_EQ(ref["condition"], "ref");
+  expect_rel(ref["ci_high"].get<double>(), 96.666666666666671 + 4.302652729749464 * std::sqrt(100.0 / 3.0) / std::sqrt(3.0),
+             "ci_high as computed");
+  EXPECT_GT(ref["ci_high"].get<double>(), 100.0);
+  EXPECT_TRUE(ref["ci_past_scale"].get<bool>());
+  EXPECT_FALSE(out["conditions"][1]["ci_past_scale"].get<bool>());
+  const auto t = test::run_cli("stats mushra " + f + " --reference ref", dir);
+  ASSERT_EQ(t.exit_code, 0) << t.err;
+  EXPECT_NE(t.out.find("111.01]*"), std::string::npos) << t.out;
+  EXPECT_NE(t.out.find("* the interval passes the 0-100 scale"), std::string::npos) << t.out;
+  EXPECT_NE(t.err.find("pass the 0-100 scale; reported as computed"), std::string::npos) << t.err;
+  EXPECT_EQ(t.out.find("nan"), std::string::npos) << t.out;
+}
+
+// No NaN, inf or raw library message with exit 0: undefined statistics are refused in one line.
+TEST(CliStatsUndefined, ConstantDataAndZeroErrorAreRefused) {
+  test::TempDir dir;
+  const std::string same = dir.write("same.csv", "s,g,v\n1,a,2\n1,b,1\n2,a,3\n2,b,2\n3,a,4\n3,b,3\n");
+  expect_bad(dir, {"stats ttest " + same + " --dv v --group g --paired --subject s",
+                   "same.csv: column 'v': the differences are all equal (standard deviation 0)"});
+  const std::string flat = dir.write("flat.csv", "g,v\na,1\na,1\nb,2\nb,2\n");
+  expect_bad(dir, {"stats ttest " + flat + " --dv v --group g", "flat.csv: column 'v': both groups are constant"});
+  expect_bad(dir, {"stats anova " + same + " --dv v --subject s --within g",
+                   "same.csv: column 'v': effect g: the error sum of squares is 0"});
+  // 1e300 data: computed (not a Boost error).
+  const std::string big = dir.write("big.csv", "g,v\na,1e300\na,2e300\na,3e300\nb,1\nb,2\nb,3\n");
+  const auto r = test::run_cli("stats ttest " + big + " --dv v --group g --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  // Welch: difference 2e300, se = sqrt(1e600/3 + 1/3) = 1e300/sqrt(3) to double precision: t = 2 sqrt(3).
+  expect_rel(j["t"].get<double>(), 2.0 * std::sqrt(3.0), "t");
+  EXPECT_TRUE(j["ci"][0].is_number());
+  EXPECT_TRUE(j["ci"][1].is_number());
+}
