@@ -10,11 +10,14 @@
 
 #include "analysis/confusion.hpp"
 #include "analysis/mushra.hpp"
+#include "studyapp/core/mushra_boxes.hpp"
 #include "studyapp/plots/plots.hpp"
 
 namespace ms::gui {
 
 namespace {
+
+std::string svg_of(const std::string& png) { return png.substr(0, png.size() - 4) + ".svg"; }
 
 struct BlockRows {
   std::string type;
@@ -46,36 +49,64 @@ Picture confusion_picture(const std::string& block_id, const BlockRows& b, const
   o.y_label = "stimulus";
   const std::string path = out_dir + "/" + block_id + "-confusion.png";
   plots::confusion_heatmap(path, labels, matrix, o);
-  return {o.title, path};
+  plots::confusion_heatmap(svg_of(path), labels, matrix, o);
+  return {o.title, path, svg_of(path)};
 }
 
+// The same recipe as `modalstudy stats mushra --plot`: boxes of the assessors post-screening keeps (the
+// hidden reference named by the block's automatic anchors; without them every assessor is kept).
 Picture mushra_picture(const std::string& block_id, const BlockRows& b, const std::string& out_dir) {
-  std::map<std::string, std::vector<double>> by_condition;
+  std::vector<MushraRating> ratings;
+  std::vector<std::string> conditions;
   for (const ResponseRow* r : b.rows) {
     const auto value = nlohmann::json::parse(r->value_json);
     if (!value.is_object()) continue;
-    for (const auto& [name, score] : value.items())
-      if (score.is_number()) by_condition[name].push_back(score.get<double>());
+    for (const auto& [name, score] : value.items()) {
+      if (!score.is_number()) continue;
+      ratings.push_back({r->participant_code + "#" + std::to_string(r->session), std::to_string(r->trial_index), name,
+                         score.get<double>()});
+      conditions.push_back(name);
+    }
   }
-  std::vector<std::string> names;
-  std::vector<std::vector<double>> ratings;
-  std::vector<double> means, lows, highs;
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  for (const auto& [name, values] : by_condition) {
-    const MushraStat s = describe(name, values, 0.95);
-    names.push_back(name);
-    ratings.push_back(values);
-    means.push_back(s.mean);
-    lows.push_back(s.ci_low.value_or(nan));
-    highs.push_back(s.ci_high.value_or(nan));
-  }
+  MushraOptions options;
+  options.reference = reference_from_anchor_names(conditions);
+  if (options.reference.empty()) options.reference_min = 0.0;  // no hidden reference known: keep everyone
+  const MushraBoxes boxes = mushra_boxes(ratings, options);
   plots::PlotOptions o;
   o.width_px = 640;
   o.height_px = 480;
-  o.title = block_id + ": MUSHRA ratings";
+  o.title = block_id + ": MUSHRA ratings (" + std::to_string(boxes.kept) + " of " + std::to_string(boxes.assessors) +
+            " assessors kept by post-screening)";
+  o.x_label = "Condition";
+  o.y_label = "Rating (0-100)";
   const std::string path = out_dir + "/" + block_id + "-mushra.png";
-  plots::mushra_boxplot(path, names, ratings, means, lows, highs, o);
-  return {o.title, path};
+  for (const std::string& p : {path, svg_of(path)})
+    plots::mushra_boxplot(p, boxes.conditions, boxes.ratings, boxes.means, boxes.ci_low, boxes.ci_high, o);
+  return {o.title, path, svg_of(path)};
+}
+
+// Every session's track: the presented level per step.
+Picture staircase_picture(const std::string& block_id, const BlockRows& b, const std::string& out_dir) {
+  std::vector<plots::Series> tracks;
+  for (const ResponseRow* r : b.rows) {
+    const auto value = nlohmann::json::parse(r->value_json);
+    if (!value.is_object() || !value.contains("levels") || !value["levels"].is_array()) continue;
+    plots::Series s;
+    s.name = r->participant_code + (r->autopilot ? " (simulated)" : "");
+    for (std::size_t i = 0; i < value["levels"].size(); ++i)
+      s.points.push_back({static_cast<double>(i + 1), value["levels"][i].get<double>()});
+    tracks.push_back(std::move(s));
+  }
+  plots::PlotOptions o;
+  o.width_px = 640;
+  o.height_px = 420;
+  o.title = block_id + ": staircase tracks";
+  o.x_label = "Step";
+  o.y_label = "Level";
+  const std::string path = out_dir + "/" + block_id + "-staircase.png";
+  plots::line_plot(path, tracks, o);
+  plots::line_plot(svg_of(path), tracks, o);
+  return {o.title, path, svg_of(path)};
 }
 
 }  // namespace
@@ -84,7 +115,7 @@ std::vector<Picture> draw_analysis_pictures(const std::vector<ResponseRow>& rows
   std::vector<std::string> order;
   std::map<std::string, BlockRows> blocks;
   for (const ResponseRow& r : rows) {
-    if (r.block_type != "identify" && r.block_type != "mushra") continue;
+    if (r.block_type != "identify" && r.block_type != "mushra" && r.block_type != "staircase") continue;
     if (!blocks.count(r.block_id)) order.push_back(r.block_id);
     blocks[r.block_id].type = r.block_type;
     blocks[r.block_id].rows.push_back(&r);
@@ -92,7 +123,9 @@ std::vector<Picture> draw_analysis_pictures(const std::vector<ResponseRow>& rows
   std::vector<Picture> pictures;
   for (const std::string& id : order) {
     const BlockRows& b = blocks[id];
-    pictures.push_back(b.type == "identify" ? confusion_picture(id, b, out_dir) : mushra_picture(id, b, out_dir));
+    if (b.type == "identify") pictures.push_back(confusion_picture(id, b, out_dir));
+    else if (b.type == "mushra") pictures.push_back(mushra_picture(id, b, out_dir));
+    else pictures.push_back(staircase_picture(id, b, out_dir));
   }
   return pictures;
 }

@@ -1,6 +1,7 @@
 // The experimenter view's pictures of a results database: per identify block the confusion heat map
-// (stimulus x label, row percent) and per MUSHRA block the box plot with means and 95 % CIs, drawn
-// with studyapp/plots from the stored responses.
+// (stimulus x label, row percent), per MUSHRA block the box plot with means and 95 % CIs after BS.1534
+// post-screening (core's mushra_boxes, the recipe of `stats mushra --plot`), per staircase block every
+// session's track, drawn with studyapp/plots from the stored responses.
 #pragma once
 #include <string>
 #include <vector>
@@ -11,7 +12,8 @@ namespace ms::gui {
 
 struct Picture {
   std::string title;
-  std::string path;  // PNG
+  std::string path;      // PNG
+  std::string svg_path;  // the same picture as SVG
 };
 
 // Writes the pictures into out_dir (which must exist); returns them in block order.

@@ -8,11 +8,13 @@
 #include <QHeaderView>
 #include <QPixmap>
 #include <QPushButton>
+#include <QFile>
 #include <QScrollArea>
 
 #include "studyapp/core/export.hpp"
 #include "studyapp/core/results_store.hpp"
 #include "studyapp/gui/analysis_pictures.hpp"
+#include "studyapp/plots/plots.hpp"
 
 namespace ms::gui {
 
@@ -51,9 +53,10 @@ ExperimenterWindow::ExperimenterWindow(const QString& db_path, QWidget* parent) 
   });
 
   auto* tabs = new QTabWidget(this);
-  table_ = new QTableWidget(0, 7, this);
+  table_ = new QTableWidget(0, 8, this);
   table_->setObjectName("sessions");
-  table_->setHorizontalHeaderLabels({"study", "participant", "session", "started", "finished", "answered", "completion"});
+  table_->setHorizontalHeaderLabels(
+      {"study", "participant", "session", "started", "finished", "answered", "completion", "answered by"});
   table_->horizontalHeader()->setStretchLastSection(true);
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   tabs->addTab(table_, "Participants and sessions");
@@ -84,7 +87,8 @@ bool ExperimenterWindow::open_db(const QString& path) {
       const QStringList cells{QString::fromStdString(s.study), QString::fromStdString(s.participant_code),
                               QString::number(s.session), when(s.started_ms),
                               s.finished_ms ? when(*s.finished_ms) : QString("—"),
-                              QString("%1 / %2").arg(s.responses).arg(s.trials), QString("%1 %").arg(pct, 0, 'f', 0)};
+                              QString("%1 / %2").arg(s.responses).arg(s.trials), QString("%1 %").arg(pct, 0, 'f', 0),
+                              s.autopilot ? QString("simulated (autopilot)") : QString("participant")};
       for (int c = 0; c < cells.size(); ++c) table_->setItem(r, c, new QTableWidgetItem(cells[c]));
     }
     status_->setText(QString("%1 session(s)").arg(sessions.size()));
@@ -103,15 +107,42 @@ void ExperimenterWindow::draw_pictures(const ResultsStore& store) {
   }
   picture_count_ = 0;
   for (const Picture& p : draw_analysis_pictures(store.response_rows(), picture_dir_.path().toStdString())) {
-    pictures_layout_->addWidget(new QLabel("<b>" + QString::fromStdString(p.title) + "</b>", pictures_));
+    auto* heading = new QHBoxLayout;
+    heading->addWidget(new QLabel("<b>" + QString::fromStdString(p.title) + "</b>", pictures_), 1);
+    auto* save = new QPushButton("Save as PNG or SVG…", pictures_);
+    save->setObjectName("savePicture");
+    const QString source = QString::fromStdString(p.path);
+    connect(save, &QPushButton::clicked, this, [this, source] {
+      const QString to = QFileDialog::getSaveFileName(this, "Save picture", QFileInfo(source).fileName(),
+                                                      "PNG (*.png);;SVG (*.svg)");
+      if (!to.isEmpty()) save_picture(source, to);
+    });
+    save->setProperty("png", source);
+    heading->addWidget(save);
+    pictures_layout_->addLayout(heading);
     auto* image = new QLabel(pictures_);
     image->setObjectName("picture");
     image->setPixmap(QPixmap(QString::fromStdString(p.path)));
     pictures_layout_->addWidget(image);
     ++picture_count_;
   }
-  if (picture_count_ == 0) pictures_layout_->addWidget(new QLabel("No identify or MUSHRA responses yet.", pictures_));
+  if (picture_count_ == 0)
+    pictures_layout_->addWidget(new QLabel("No identify, MUSHRA or staircase responses yet.", pictures_));
   pictures_layout_->addStretch();
+}
+
+bool ExperimenterWindow::save_picture(const QString& png, const QString& to) {
+  try {
+    const bool svg = plots::check_output_path(to.toStdString());  // .png or .svg, else a one-line refusal
+    const QString source = svg ? png.left(png.size() - 4) + ".svg" : png;  // drawn as both
+    QFile::remove(to);
+    if (!QFile::copy(source, to)) throw std::runtime_error("cannot write " + to.toStdString());
+    status_->setText("Saved " + to);
+    return true;
+  } catch (const std::exception& e) {
+    status_->setText(QString("Cannot save the picture: %1").arg(QString::fromStdString(e.what())));
+    return false;
+  }
 }
 
 bool ExperimenterWindow::export_to(const QString& dir) {

@@ -25,6 +25,8 @@ class ExperimenterWindow : public QWidget {
   bool open_db(const QString& path);
   // Exports into `dir`; false (with the reason shown) on failure.
   bool export_to(const QString& dir);
+  // Saves a drawn picture (its PNG) as `to`: .png copied, .svg embedding it; false (reason shown) on failure.
+  bool save_picture(const QString& png, const QString& to);
   QTableWidget& sessions() { return *table_; }
   int picture_count() const { return picture_count_; }
 

@@ -6,6 +6,7 @@
 #include <QRadioButton>
 
 #include <cstdlib>
+#include <fstream>
 #include <map>
 
 #include "gui_fixture.hpp"
@@ -124,7 +125,25 @@ TEST(Screenshots, EveryViewRendersWithItsWidgets) {
   experimenter.show();
   ASSERT_TRUE(QTest::qWaitForWindowExposed(&experimenter));
   EXPECT_EQ(experimenter.sessions().rowCount(), 1);
-  EXPECT_EQ(experimenter.picture_count(), 2);  // identify confusion + MUSHRA box plot
+  EXPECT_EQ(experimenter.picture_count(), 3);  // identify confusion, MUSHRA boxes, staircase tracks
+  EXPECT_EQ(experimenter.sessions().item(0, 7)->text(), "participant");  // not simulated
+  {
+    const auto saves = children_with_prefix<QPushButton>(&experimenter, "savePicture");
+    ASSERT_EQ(saves.size(), 3u);
+    const QString png = saves[0]->property("png").toString();
+    EXPECT_TRUE(experimenter.save_picture(png, QString::fromStdString(dir + "/picture.svg")));
+    EXPECT_TRUE(experimenter.save_picture(png, QString::fromStdString(dir + "/picture.png")));
+    EXPECT_FALSE(experimenter.save_picture(png, QString::fromStdString(dir + "/picture.jpg")));
+    std::ifstream svg(dir + "/picture.svg");
+    std::string head(200, '\0');
+    svg.read(head.data(), 200);
+    EXPECT_NE(head.find("<svg"), std::string::npos) << head;
+    EXPECT_GT(std::filesystem::file_size(dir + "/picture.png"), 1000u);
+    EXPECT_FALSE(std::filesystem::exists(dir + "/picture.jpg"));
+  }
+  bool post_screened = false;
+  for (auto* l : experimenter.findChildren<QLabel*>()) post_screened = post_screened || l->text().contains("kept by post-screening");
+  EXPECT_TRUE(post_screened);
   check_picture(experimenter, "experimenter");
   ASSERT_TRUE(experimenter.export_to(QString::fromStdString(dir + "/export")));
   EXPECT_TRUE(std::filesystem::exists(dir + "/export/responses.csv"));
