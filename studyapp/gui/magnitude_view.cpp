@@ -1,4 +1,4 @@
-// Magnitude estimation: the reference pair (= 100) is played first, then the trial's pair; the participant
+// Magnitude estimation: the reference pair (= the block's modulus value, 100 by default) is played first, then the trial's pair; the participant
 // types how different the pair sounds relative to the reference pair. The field takes a decimal point or
 // comma, says why a value is refused (core's read_magnitude), takes 0 where the block has identical pairs,
 // and has the keyboard focus from the start (Enter = Next).
@@ -28,15 +28,18 @@ class MagnitudeView : public TrialView {
     names.insert(names.end(), trial.stimuli.begin(), trial.stimuli.end());
     labels << "A" << "B";
     c.set_sounds(sounds_of(c, names));
-    add_prompt(modulus_count_ ? "First listen to the reference pair: its difference counts as 100. Then listen to "
-                                "A and B and type how different they sound (50 = half as different, 200 = twice "
-                                "as different)."
-                              : "Listen to A and B and type how different they sound.");
+    const double modulus = mb ? mb->modulus_value : 100.0;
+    const QString m = QString::number(modulus, 'g', 6), half = QString::number(modulus / 2, 'g', 6),
+                  twice = QString::number(modulus * 2, 'g', 6);
+    add_prompt(modulus_count_ ? QString("First listen to the reference pair: its difference counts as %1. Then listen to "
+                                        "A and B and type how different they sound (%2 = half as different, %3 = twice "
+                                        "as different).").arg(m, half, twice)
+                              : QString("Listen to A and B and type how different they sound."));
     if (zero_allowed_) add_note("Type 0 if A and B sound exactly the same.");
     add_sound_buttons(labels, false);
     entry_ = new QLineEdit(body());
     entry_->setObjectName("magnitude");
-    entry_->setPlaceholderText(modulus_count_ ? "how different? (reference pair = 100)" : "how different?");
+    entry_->setPlaceholderText(modulus_count_ ? QString("how different? (reference pair = %1)").arg(m) : QString("how different?"));
     entry_->setMaximumWidth(entry_->fontMetrics().averageCharWidth() * 40);
     connect(entry_, &QLineEdit::textChanged, this, [this] { refresh(); });
     layout_->addWidget(entry_);

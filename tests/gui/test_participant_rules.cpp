@@ -330,3 +330,17 @@ TEST(ParticipantRules, StartPageSaysWhatTheResultsFileHoldsForTheParticipant) {
   EXPECT_TRUE(status_of(w).contains("Careful: 'P07' is already in this results file")) << status_of(w).toStdString();
   EXPECT_TRUE(start_of(w)->isEnabled());
 }
+
+TEST(ParticipantRules, MagnitudePromptAndFieldShowTheProtocolsModulusValue) {
+  const std::string dir = fresh_dir("rules-modulus-value");
+  ms::gui::MainWindow w(options_for(
+      write_protocol(dir, "  - {type: magnitude, modulus: [metal, glass], modulus_value: 10, pairs: [[metal, glass]]}\n"),
+      dir, "R9"));
+  ASSERT_TRUE(start_window(w));
+  QWidget* v = w.trial_view();
+  const QString prompt = child<QLabel>(v, "prompt")->text();
+  EXPECT_TRUE(prompt.contains("counts as 10.")) << prompt.toStdString();
+  EXPECT_TRUE(prompt.contains("5 = half as different, 20 = twice")) << prompt.toStdString();
+  EXPECT_FALSE(prompt.contains("100")) << prompt.toStdString();
+  EXPECT_EQ(child<QLineEdit>(v, "magnitude")->placeholderText(), "how different? (reference pair = 10)");
+}
