@@ -29,7 +29,12 @@ for t in "${targets[@]}"; do
       -malloc_limit_mb=2048 -max_len=65536 -print_final_stats=1 -artifact_prefix="$artifacts/" \
       "$found" "tests/fuzz/corpus/$t" "tests/fuzz/regressions/$t" >"build-fuzz/fuzz_$t.log" 2>&1; then
     echo "fuzz_$t FAILED (input kept in $artifacts/):" >&2
-    grep -E "ERROR|SUMMARY|Test unit written|==[0-9]+==" "build-fuzz/fuzz_$t.log" | head -20 >&2
+    # The finding, what was thrown (an escaped exception ends in "deadly signal") and our frames.
+    grep -E "ERROR|SUMMARY|Test unit written|==[0-9]+==|terminate called|what\(\):| in ms::" \
+      "build-fuzz/fuzz_$t.log" | head -30 >&2
+    for unit in "$artifacts"/*; do
+      [ -f "$unit" ] && { echo "-- $unit (base64):" >&2; head -c 4096 "$unit" | base64 -w 100 >&2; }
+    done
     status=1
   else
     grep -E "^stat::number_of_executed_units|^stat::peak_rss_mb" "build-fuzz/fuzz_$t.log" | tr '\n' ' '

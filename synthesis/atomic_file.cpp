@@ -69,7 +69,7 @@ void write_atomically(const std::string& path, const std::function<void(const st
   static std::atomic<unsigned> counter{0};
   const fs::path target(path);
   const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  if (!fs::is_directory(dir))
+  if (std::error_code ec; !fs::is_directory(dir, ec))
     throw InputError(SourceLocation{path, 0, 0}, "cannot write: folder '" + dir.string() +
                                                      "' does not exist");
   const std::string temp = (dir / ("." + target.filename().string() + ".tmp" +

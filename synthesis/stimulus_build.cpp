@@ -33,8 +33,12 @@ std::vector<Job> collect(const std::vector<std::string>& inputs) {
   std::vector<Job> jobs;
   for (const auto& input : inputs) {
     const fs::path in(input);
-    if (!fs::exists(in)) throw InputError(SourceLocation{input, 0, 0}, "no such file or folder");
-    if (fs::is_directory(in)) {
+    std::error_code status_error;
+    const fs::file_status status = fs::status(in, status_error);
+    if (status_error && status_error != std::errc::no_such_file_or_directory)
+      throw InputError(SourceLocation{input, 0, 0}, "cannot read: " + status_error.message());
+    if (!fs::exists(status)) throw InputError(SourceLocation{input, 0, 0}, "no such file or folder");
+    if (fs::is_directory(status)) {
       std::vector<fs::path> files;
       for (const auto& e : fs::recursive_directory_iterator(in))
         if (e.is_regular_file() && (e.path().extension() == ".yaml" || e.path().extension() == ".yml"))
@@ -113,7 +117,7 @@ BuildReport build_stimuli(const std::vector<std::string>& inputs, const std::str
   }
   std::error_code ec;
   fs::create_directories(out_dir, ec);
-  if (ec || !fs::is_directory(out_dir))
+  if (ec || !fs::is_directory(out_dir, ec))
     throw InputError(SourceLocation{out_dir, 0, 0}, "cannot create output folder");
   const fs::path manifest_path = fs::path(out_dir) / "manifest.json";
   const auto previous = read_manifest(manifest_path);
@@ -128,7 +132,7 @@ BuildReport build_stimuli(const std::vector<std::string>& inputs, const std::str
     e.recipe_hash = sets[i].recipe_hash;
     const fs::path out = fs::path(out_dir) / e.name;
     auto it = previous.find(e.name);
-    if (it != previous.end() && it->second.value("recipe_hash", "") == e.recipe_hash && fs::exists(out) &&
+    if (it != previous.end() && it->second.value("recipe_hash", "") == e.recipe_hash && fs::exists(out, ec) &&
         sha256_file_hex(out.string()) == it->second.value("sha256", "")) {
       e.sha256 = it->second.value("sha256", "");
       e.frames = it->second.value("frames", std::size_t(0));

@@ -180,7 +180,8 @@ void register_audit(CLI::App& app) {
   cmd->callback([opt] {
     std::optional<ParamSet> given;
     if (!opt->model.empty()) given = load_paramset(opt->model);
-    if (!opt->report.empty() && std::filesystem::exists(opt->report) && !std::filesystem::is_directory(opt->report))
+    if (std::error_code ec; !opt->report.empty() && std::filesystem::exists(opt->report, ec) &&
+        !std::filesystem::is_directory(opt->report, ec))
       throw InputError(SourceLocation{opt->report, 0, 0}, "--report must be a folder");
     std::vector<audit::Recording> recordings;
     for (const std::string& path : opt->measured) {

@@ -100,7 +100,7 @@ void register_compare(CLI::App& app) {
   cmd->add_flag("--json", opt->json, "Print one JSON object");
   cmd->callback([opt] {
     namespace fs = std::filesystem;
-    if (!opt->plot_dir.empty() && fs::exists(opt->plot_dir) && !fs::is_directory(opt->plot_dir))
+    if (std::error_code ec; !opt->plot_dir.empty() && fs::exists(opt->plot_dir, ec) && !fs::is_directory(opt->plot_dir, ec))
       throw InputError(SourceLocation{opt->plot_dir, 0, 0}, "--plot must be a folder");
     const bool image = opt->metric.empty() || opt->metric == "image" || opt->metric == "hybrid";
     const bool feature = opt->metric.empty() || opt->metric == "feature" || opt->metric == "hybrid";

@@ -233,7 +233,7 @@ void register_plot(CLI::App& app) {
       throw InputError("--format: expected png or svg, got '" + opt->format + "'");
     std::error_code ec;
     fs::create_directories(opt->dir, ec);
-    if (!fs::is_directory(opt->dir))
+    if (!fs::is_directory(opt->dir, ec))
       throw InputError(SourceLocation{opt->dir, 0, 0}, "cannot create the output folder" +
                                                            (ec ? " (" + ec.message() + ")" : std::string()));
     demo(opt->dir, "." + opt->format);

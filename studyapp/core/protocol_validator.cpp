@@ -92,8 +92,12 @@ std::vector<std::string> validate_protocol(const Protocol& p, const ValidateOpti
       continue;
     }
     const fs::path resolved = confinement.resolve(s.path, p.base_dir);
-    if (!fs::exists(resolved)) {
-      problems.push_back(at(s.path_where, "stimulus '" + s.name + "': file '" + s.path + "' does not exist"));
+    // A written path can be unreadable in ways other than absence (a name too long, a loop of links).
+    std::error_code status_error;
+    if (!fs::exists(resolved, status_error)) {
+      problems.push_back(at(s.path_where, "stimulus '" + s.name + "': file '" + s.path + "' " +
+                                              (status_error ? "cannot be read: " + status_error.message()
+                                                            : std::string("does not exist"))));
       continue;
     }
     // The checks the stimulus cache makes when a session starts, so that check and start agree.
@@ -181,7 +185,7 @@ Confinement protocol_confinement(const Protocol& p, const ValidateOptions& optio
     roots.push_back(options.stimuli_dir);
   } else {
     for (const fs::path& cand : {base / "stimuli", base.parent_path() / "stimuli"})
-      if (fs::is_directory(cand)) roots.push_back(cand);
+      if (std::error_code ec; fs::is_directory(cand, ec)) roots.push_back(cand);
   }
   return Confinement::within(roots, "the protocol's folder and the project's stimuli/ folder",
                              "use --allow-outside or allow_outside: true");

@@ -98,6 +98,16 @@ TEST(Protocol, MissingFileIsReported) {
   EXPECT_EQ(p[0], dir.file("p.yaml") + ":3:13: stimulus 'a': file 'nope.wav' does not exist");
 }
 
+TEST(Protocol, UnreadablePathIsReportedNotThrown) {
+  TempDir dir;
+  const std::string name(300, 'x');  // longer than any file system allows for one name
+  const auto p = check(dir, "study: t\nstimuli:\n  a: {file: " + name + ".wav}\n"
+                            "blocks:\n  - {type: identify, stimuli: [a], labels: [x]}\n");
+  ASSERT_EQ(p.size(), 1u) << all(p);
+  EXPECT_EQ(p[0].rfind(dir.file("p.yaml") + ":3:13: stimulus 'a': file '" + name + ".wav' cannot be read: ", 0), 0u)
+      << p[0];
+}
+
 TEST(Protocol, DuplicateIdsAreReported) {
   TempDir dir;
   const auto p = check(dir, kHead + "blocks:\n  - {type: ab, id: x, pairs: [[a, b]]}\n"
