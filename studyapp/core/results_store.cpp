@@ -437,44 +437,48 @@ void ResultsStore::release_lease(std::int64_t session, const LeaseHolder& holder
   q.bind(1, session).bind(2, holder.host).bind(3, holder.pid).bind(4, holder.process_start).run();
 }
 
-void ResultsStore::record_response(std::int64_t session, const ResponseRecord& r) {
+void ResultsStore::write_in_session(std::int64_t session, std::int64_t now_ms, const std::function<void()>& write) {
   if (!writable_) throw sqlite::Error(path() + ": opened read-only", SQLITE_READONLY);
-  // One transaction per response: COMMIT returns only after the WAL is fsynced (synchronous=FULL).
+  // One transaction per write: COMMIT returns only after the WAL is fsynced (synchronous=FULL).
   sqlite::Transaction tx(db_);
-  check_lease(session, me_, r.timestamp_ms);
-  sqlite::Statement insert(db_,
-                           "INSERT INTO responses(session, block_index, trial_index, value, rt_ms, plays, timestamp) "
-                           "VALUES (?, ?, ?, ?, ?, ?, ?)");
-  insert.bind(1, session).bind(2, r.trial.block_index).bind(3, r.trial.trial_index);
-  insert.bind(4, r.value_json).bind(5, r.rt_ms).bind(6, r.plays).bind(7, r.timestamp_ms);
-  try {
-    insert.run();
-  } catch (const sqlite::Error& e) {
-    if (e.code() == SQLITE_CONSTRAINT)
-      throw sqlite::Error(path() + ": cannot record response to session " + std::to_string(session) + " block " +
-                              std::to_string(r.trial.block_index) + " trial " + std::to_string(r.trial.trial_index) +
-                              " (already answered, not scheduled, or value not JSON): " + e.what(),
-                          e.code());
-    throw;
-  }
+  check_lease(session, me_, now_ms);
+  write();
   tx.commit();
 }
 
+void ResultsStore::record_response(std::int64_t session, const ResponseRecord& r) {
+  write_in_session(session, r.timestamp_ms, [&] {
+    sqlite::Statement insert(db_,
+                             "INSERT INTO responses(session, block_index, trial_index, value, rt_ms, plays, timestamp) "
+                             "VALUES (?, ?, ?, ?, ?, ?, ?)");
+    insert.bind(1, session).bind(2, r.trial.block_index).bind(3, r.trial.trial_index);
+    insert.bind(4, r.value_json).bind(5, r.rt_ms).bind(6, r.plays).bind(7, r.timestamp_ms);
+    try {
+      insert.run();
+    } catch (const sqlite::Error& e) {
+      if (e.code() == SQLITE_CONSTRAINT)
+        throw sqlite::Error(path() + ": cannot record response to session " + std::to_string(session) + " block " +
+                                std::to_string(r.trial.block_index) + " trial " + std::to_string(r.trial.trial_index) +
+                                " (already answered, not scheduled, or value not JSON): " + e.what(),
+                            e.code());
+      throw;
+    }
+  });
+}
+
 void ResultsStore::record_event(std::int64_t session, const PlaybackEvent& e) {
-  if (!writable_) throw sqlite::Error(path() + ": opened read-only", SQLITE_READONLY);
-  sqlite::Transaction tx(db_);
-  check_lease(session, me_, e.timestamp_ms);
-  sqlite::Statement insert(db_,
-                           "INSERT INTO events(session, block_index, trial_index, kind, stimulus, timestamp_ms, "
-                           "detail) VALUES (?, ?, ?, ?, ?, ?, ?)");
-  insert.bind(1, session).bind(2, e.trial.block_index).bind(3, e.trial.trial_index);
-  insert.bind(4, to_string(e.kind)).bind(5, e.stimulus).bind(6, e.timestamp_ms);
-  if (e.detail_json.empty())
-    insert.bind_null(7);
-  else
-    insert.bind(7, e.detail_json);
-  insert.run();
-  tx.commit();
+  write_in_session(session, e.timestamp_ms, [&] {
+    sqlite::Statement insert(db_,
+                             "INSERT INTO events(session, block_index, trial_index, kind, stimulus, timestamp_ms, "
+                             "detail) VALUES (?, ?, ?, ?, ?, ?, ?)");
+    insert.bind(1, session).bind(2, e.trial.block_index).bind(3, e.trial.trial_index);
+    insert.bind(4, to_string(e.kind)).bind(5, e.stimulus).bind(6, e.timestamp_ms);
+    if (e.detail_json.empty())
+      insert.bind_null(7);
+    else
+      insert.bind(7, e.detail_json);
+    insert.run();
+  });
 }
 
 std::optional<TrialPosition> ResultsStore::first_unanswered_trial(std::int64_t session) const {

@@ -5,6 +5,7 @@
 // is leased to one process (see session_lease.hpp).
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -201,6 +202,9 @@ class ResultsStore {
  private:
   void insert_trials(std::int64_t session, const std::vector<TrialRecord>& trials);
   void check_lease(std::int64_t session, const LeaseHolder& holder, std::int64_t now_ms);
+  // Runs `write` in one transaction of a session this process holds (refused when read-only or when
+  // another process took the session over); committed only if `write` returns.
+  void write_in_session(std::int64_t session, std::int64_t now_ms, const std::function<void()>& write);
   const char* autopilot_column() const;  // "s.autopilot", or "0" in a read-only version-1 file
 
   sqlite::Database db_;
