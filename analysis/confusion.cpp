@@ -2,6 +2,7 @@
 
 #include <boost/math/distributions/chi_squared.hpp>
 #include <boost/math/distributions/normal.hpp>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -91,6 +92,27 @@ Interval newcombe_difference(double x1, double n1, double x2, double n2, double 
   const double p1 = x1 / n1, p2 = x2 / n2, d = p1 - p2;
   return {d - std::sqrt((p1 - a.low) * (p1 - a.low) + (b.high - p2) * (b.high - p2)),
           d + std::sqrt((a.high - p1) * (a.high - p1) + (p2 - b.low) * (p2 - b.low))};
+}
+
+}  // namespace ms
+
+namespace ms {
+
+ConfusionResponses confusion_responses_from_table(const TidyCsv& table, const std::string& truth_column,
+                                                  const std::string& response_column,
+                                                  const std::vector<std::string>& labels) {
+  const std::size_t ct = table.column(truth_column), cr = table.column(response_column);
+  if (table.rows() == 0) throw InputError(SourceLocation{table.file(), 0, 0}, "no data rows");
+  ConfusionResponses out;
+  for (std::size_t i = 0; i < table.rows(); ++i)
+    for (std::size_t c : {ct, cr}) {
+      const std::string& v = table.cell(i, c);
+      if (v.empty()) throw InputError(table.where(i, c), "column '" + table.header()[c] + "': empty label");
+      if (!labels.empty() && std::find(labels.begin(), labels.end(), v) == labels.end())
+        throw InputError(table.where(i, c), "column '" + table.header()[c] + "': label '" + v + "' is not in --labels");
+      (c == ct ? out.truth : out.response).push_back(v);
+    }
+  return out;
 }
 
 }  // namespace ms

@@ -23,6 +23,8 @@
 #include <string>
 #include <vector>
 
+#include "analysis/tidy_csv.hpp"
+
 namespace ms {
 
 struct Confusion {
@@ -33,6 +35,15 @@ struct Confusion {
 // Counts pairs (truth[k], response[k]) over `labels`; every value must be one of the labels.
 Confusion confusion_from_pairs(const std::vector<std::string>& labels, const std::vector<std::string>& truth,
                                const std::vector<std::string>& response);
+
+// The (truth, response) pairs of an identification table, one row per response. InputError at the
+// cell for an empty label or, when `labels` is not empty, a label not among them; "no data rows".
+struct ConfusionResponses {
+  std::vector<std::string> truth, response;
+};
+ConfusionResponses confusion_responses_from_table(const TidyCsv& table, const std::string& truth_column,
+                                                  const std::string& response_column,
+                                                  const std::vector<std::string>& labels);
 
 Eigen::MatrixXd row_percent(const Eigen::MatrixXd& counts);
 double accuracy(const Eigen::MatrixXd& counts);

@@ -1,6 +1,9 @@
 #include "analysis/method_of_limits.hpp"
 
 #include <stdexcept>
+#include <utility>
+
+#include "analysis/row_groups.hpp"
 
 namespace ms {
 
@@ -22,6 +25,29 @@ LimitsThreshold descending_limits_threshold(const std::vector<double>& levels, c
     t.censored = true;
   }
   return t;
+}
+
+}  // namespace ms
+
+namespace ms {
+
+std::vector<LimitsSeries> limits_series_from_table(const TidyCsv& table, const LimitsColumns& columns) {
+  const std::size_t cl = table.column(columns.level), cr = table.column(columns.response);
+  if (table.rows() == 0) throw InputError(SourceLocation{table.file(), 0, 0}, "no data rows");
+  std::vector<LimitsSeries> out;
+  for (const auto& [name, rows] : group_rows(table, columns.track)) {
+    LimitsSeries s{name, {}, {}};
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      s.levels.push_back(table.number(rows[i], cl));
+      if (i > 0 && !(s.levels[i] < s.levels[i - 1]))
+        throw InputError(table.where(rows[i], cl), "column '" + columns.level + "': level " +
+                                                       table.cell(rows[i], cl) +
+                                                       " does not fall below the previous trial of its series");
+      s.different.push_back(table.cell(rows[i], cr) == columns.different);
+    }
+    out.push_back(std::move(s));
+  }
+  return out;
 }
 
 }  // namespace ms

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "analysis/tidy_csv.hpp"
+
 namespace ms {
 
 struct LimitsThreshold {
@@ -19,5 +21,24 @@ struct LimitsThreshold {
 
 // `levels` must fall strictly from trial to trial (throws std::invalid_argument naming the trial).
 LimitsThreshold descending_limits_threshold(const std::vector<double>& levels, const std::vector<bool>& different);
+
+}  // namespace ms
+
+namespace ms {
+
+// The series of a tidy table, one row per trial in presentation order, grouped by the `track`
+// columns (in order of first appearance): the level of each trial and whether the answer was
+// `different`. InputError at the cell for a level that is not a number or does not fall below the
+// previous trial of its series; "no data rows".
+struct LimitsColumns {
+  std::string level, response, different = "different";
+  std::vector<std::string> track;
+};
+struct LimitsSeries {
+  std::string name;  // the track columns' values joined by '/', "" without track columns
+  std::vector<double> levels;
+  std::vector<bool> different;
+};
+std::vector<LimitsSeries> limits_series_from_table(const TidyCsv& table, const LimitsColumns& columns);
 
 }  // namespace ms

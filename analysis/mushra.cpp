@@ -4,6 +4,7 @@
 #include <boost/math/distributions/students_t.hpp>
 #include <cmath>
 #include <map>
+#include <set>
 #include <tuple>
 #include <unordered_map>
 
@@ -96,6 +97,57 @@ MushraResult mushra_analyse(const std::vector<MushraRating>& ratings, const Mush
     for (std::size_t c = 0; c < conditions.size(); ++c)
       it.conditions.push_back(describe(conditions[c], by_item[i][c], options.conf_level));
     out.items.push_back(std::move(it));
+  }
+  return out;
+}
+
+}  // namespace ms
+
+namespace ms {
+
+namespace {
+
+// The first of `candidates` the table has, or the explicit choice when given.
+std::size_t pick_column(const TidyCsv& table, const std::string& chosen, const std::vector<std::string>& candidates) {
+  if (!chosen.empty()) return table.column(chosen);
+  for (const auto& c : candidates)
+    if (table.has_column(c)) return table.column(c);
+  std::string names;
+  for (const auto& c : candidates) names += (names.empty() ? "'" : " or '") + c + "'";
+  throw InputError(SourceLocation{table.file(), 1, 1}, "missing column " + names);
+}
+
+}  // namespace
+
+MushraTable mushra_from_table(const TidyCsv& table, const MushraColumns& columns, const MushraOptions& options) {
+  const std::size_t cs = pick_column(table, columns.subject, {"participant", "subject", "session_uuid"});
+  const std::size_t ci = pick_column(table, columns.item, {"trial", "item", "trial_id"});
+  const std::size_t cc = pick_column(table, columns.condition, {"condition", "rating_stimulus"});
+  const std::size_t cr = pick_column(table, columns.rating, {"rating", "rating_score"});
+  if (table.rows() == 0) throw InputError(SourceLocation{table.file(), 0, 0}, "no data rows");
+  MushraTable out{{}, options};
+  std::set<std::string> conditions;
+  for (std::size_t r = 0; r < table.rows(); ++r) {
+    const double v = table.number(r, cr);
+    if (v < 0 || v > 100)
+      throw InputError(table.where(r, cr), "column '" + table.header()[cr] + "': rating " + table.cell(r, cr) +
+                                               " outside the MUSHRA scale 0-100");
+    for (std::size_t c : {cs, ci, cc})
+      if (table.cell(r, c).empty()) throw InputError(table.where(r, c), "column '" + table.header()[c] + "': empty");
+    out.ratings.push_back(MushraRating{table.cell(r, cs), table.cell(r, ci), table.cell(r, cc), v});
+    conditions.insert(table.cell(r, cc));
+  }
+  const SourceLocation header{table.file(), 1, 1};
+  if (!conditions.count(options.reference))
+    throw InputError(header, "no condition named '" + options.reference + "' in column '" + table.header()[cc] +
+                                 "' (name the hidden reference with --reference)");
+  if (options.anchors.empty()) {
+    for (const auto& c : conditions)
+      if (c.rfind("anchor", 0) == 0) out.options.anchors.push_back(c);
+  } else {
+    for (const auto& a : options.anchors)
+      if (!conditions.count(a))
+        throw InputError(header, "--anchor: no condition named '" + a + "' in column '" + table.header()[cc] + "'");
   }
   return out;
 }

@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include "analysis/tidy_csv.hpp"
+
 namespace ms {
 
 struct MushraRating {
@@ -70,6 +72,21 @@ struct MushraResult {
 };
 
 MushraResult mushra_analyse(const std::vector<MushraRating>& ratings, const MushraOptions& options);
+
+// The ratings of a tidy table, one row per rating. A column left empty is the first of its defaults
+// the table has (webMUSHRA's names accepted): subject participant|subject|session_uuid, item
+// trial|item|trial_id, condition condition|rating_stimulus, rating rating|rating_score.
+// InputError at the cell for a rating outside 0-100 or an empty name, and at the header when the
+// hidden reference or a named anchor is not a condition. Anchors left empty in `options` become the
+// conditions named anchor*.
+struct MushraColumns {
+  std::string subject, item, condition, rating;
+};
+struct MushraTable {
+  std::vector<MushraRating> ratings;
+  MushraOptions options;  // `options` with the anchors resolved
+};
+MushraTable mushra_from_table(const TidyCsv& table, const MushraColumns& columns, const MushraOptions& options);
 
 // Mean, sd and t-based interval of a sample.
 MushraStat describe(const std::string& name, const std::vector<double>& values, double conf_level);

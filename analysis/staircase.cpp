@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+
+#include "analysis/row_groups.hpp"
 
 namespace ms {
 
@@ -39,6 +42,36 @@ StaircaseThreshold staircase_threshold(const std::vector<double>& levels, std::o
       ss += (v - mean) * (v - mean);
     }
     out.sd = std::sqrt(ss / double(out.used - 1));
+  }
+  return out;
+}
+
+}  // namespace ms
+
+namespace ms {
+
+StaircaseTracks staircase_tracks_from_table(const TidyCsv& table, const StaircaseColumns& columns, bool log_scale) {
+  const std::size_t cl = table.column(columns.level);
+  const std::size_t ct = columns.trial.empty() ? 0 : table.column(columns.trial);
+  StaircaseTracks out;
+  out.has_next_level = !columns.next_level.empty() && table.has_column(columns.next_level);
+  const std::size_t cn = out.has_next_level ? table.column(columns.next_level) : 0;
+  if (table.rows() == 0) throw InputError(SourceLocation{table.file(), 0, 0}, "no data rows");
+  for (auto [name, rows] : group_rows(table, columns.track)) {
+    if (!columns.trial.empty()) {
+      std::vector<std::pair<double, std::size_t>> order;
+      for (std::size_t r : rows) order.push_back({table.number(r, ct), r});
+      std::stable_sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+      for (std::size_t i = 0; i < rows.size(); ++i) rows[i] = order[i].second;
+    }
+    StaircaseTrackLevels track{name, {}, std::nullopt};
+    for (std::size_t r : rows) {
+      track.levels.push_back(table.number(r, cl));
+      if (log_scale && !(track.levels.back() > 0))
+        throw InputError(table.where(r, cl), "column '" + columns.level + "': --log needs levels above 0");
+    }
+    if (out.has_next_level) track.next_level = table.number(rows.back(), cn);
+    out.tracks.push_back(std::move(track));
   }
   return out;
 }

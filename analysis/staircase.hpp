@@ -7,7 +7,10 @@
 #pragma once
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <vector>
+
+#include "analysis/tidy_csv.hpp"
 
 namespace ms {
 
@@ -31,5 +34,24 @@ StaircaseThreshold staircase_threshold(const std::vector<double>& levels, std::o
 
 // Reversals skipped by default: the approach to the threshold, not the threshold.
 std::size_t staircase_default_skip(std::size_t reversals);
+
+// The tracks of a tidy table, one row per trial: grouped by the `track` columns (in order of first
+// appearance), ordered by `trial` when given (stable, else file order), with the level after the last
+// answer from `next_level` when the table has that column. InputError at the cell for a level that is
+// not a number, or not above 0 with log_scale; "no data rows".
+struct StaircaseColumns {
+  std::string level, trial, next_level;  // trial, next_level: optional
+  std::vector<std::string> track;
+};
+struct StaircaseTrackLevels {
+  std::string name;  // the track columns' values joined by '/', "" without track columns
+  std::vector<double> levels;
+  std::optional<double> next_level;
+};
+struct StaircaseTracks {
+  bool has_next_level = false;
+  std::vector<StaircaseTrackLevels> tracks;
+};
+StaircaseTracks staircase_tracks_from_table(const TidyCsv& table, const StaircaseColumns& columns, bool log_scale);
 
 }  // namespace ms

@@ -2,6 +2,8 @@
 
 #include <boost/math/distributions/students_t.hpp>
 #include <algorithm>
+#include <array>
+#include <map>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -88,6 +90,78 @@ TTest student_t_test(const std::vector<double>& x, const std::vector<double>& y,
   const double pooled = ((a.n - 1) * a.var + (b.n - 1) * b.var) / df;
   if (!(pooled > 0)) throw std::domain_error("both groups are constant (standard deviation 0): no t statistic");
   return finish(a.mean - b.mean, std::sqrt(pooled * (1 / a.n + 1 / b.n)), df, conf_level, s);
+}
+
+}  // namespace ms
+
+namespace ms {
+
+namespace {
+
+// Paired: the mean of each subject's observations per level.
+void average_per_subject(const TidyCsv& table, const TTestColumns& columns, std::size_t col_s,
+                         const std::vector<std::size_t>& row_level, TTestSamples& out) {
+  std::vector<std::string> subjects;
+  std::map<std::string, std::size_t> subject_index;
+  std::vector<std::array<double, 2>> sums;
+  std::vector<std::array<int, 2>> counts;
+  std::vector<std::size_t> subject_row;
+  const std::size_t col_dv = table.column(columns.dv);
+  for (std::size_t r = 0; r < table.rows(); ++r) {
+    auto [it, added] = subject_index.try_emplace(table.cell(r, col_s), subjects.size());
+    if (added) {
+      subjects.push_back(table.cell(r, col_s));
+      sums.push_back({0, 0});
+      counts.push_back({0, 0});
+      subject_row.push_back(r);
+    }
+    sums[it->second][row_level[r]] += table.number(r, col_dv);
+    counts[it->second][row_level[r]] += 1;
+  }
+  for (std::size_t s = 0; s < subjects.size(); ++s) {
+    for (std::size_t k = 0; k < 2; ++k) {
+      if (counts[s][k] == 0)
+        throw InputError(table.where(subject_row[s], col_s), "subject '" + subjects[s] + "' has no observation for " +
+                                                                 columns.group + "=" + out.levels[k]);
+      out.averaged |= counts[s][k] > 1;
+      (k == 0 ? out.first : out.second).push_back(sums[s][k] / counts[s][k]);
+    }
+  }
+  if (subjects.size() < 2) throw InputError(table.where(0, col_s), "a paired t-test needs at least two subjects");
+}
+
+}  // namespace
+
+TTestSamples t_test_samples_from_table(const TidyCsv& table, const TTestColumns& columns) {
+  const std::size_t col_dv = table.column(columns.dv), col_g = table.column(columns.group);
+  const std::size_t col_s = columns.paired ? table.column(columns.subject) : 0;
+  if (table.rows() == 0) throw InputError(SourceLocation{table.file(), 0, 0}, "no data rows");
+  TTestSamples out;
+  std::vector<std::size_t> row_level;
+  for (std::size_t r = 0; r < table.rows(); ++r) {
+    const double v = table.number(r, col_dv);
+    const std::string& g = table.cell(r, col_g);
+    std::size_t k = 0;
+    while (k < out.levels.size() && out.levels[k] != g) ++k;
+    if (k == out.levels.size()) {
+      if (out.levels.size() == 2)
+        throw InputError(table.where(r, col_g), "column '" + columns.group + "': a third level '" + g +
+                                                    "' (a t-test compares exactly two)");
+      out.levels.push_back(g);
+    }
+    row_level.push_back(k);
+    if (!columns.paired) (k == 0 ? out.first : out.second).push_back(v);
+  }
+  if (out.levels.size() < 2)
+    throw InputError(table.where(0, col_g), "column '" + columns.group + "' has a single level; need two");
+  if (columns.paired) {
+    average_per_subject(table, columns, col_s, row_level, out);
+  } else {
+    for (std::size_t k = 0; k < 2; ++k)
+      if ((k == 0 ? out.first : out.second).size() < 2)
+        throw InputError(table.where(0, col_g), "level '" + out.levels[k] + "' has fewer than two observations");
+  }
+  return out;
 }
 
 }  // namespace ms

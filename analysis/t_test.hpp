@@ -10,7 +10,10 @@
 // results. Constant data (se = 0, where t is 0/0 or infinite) and results beyond the double range
 // throw std::domain_error, as R's t.test refuses "data are essentially constant".
 #pragma once
+#include <string>
 #include <vector>
+
+#include "analysis/tidy_csv.hpp"
 
 namespace ms {
 
@@ -30,5 +33,21 @@ TTest student_t_test(const std::vector<double>& x, const std::vector<double>& y,
 
 // Two-sided p of a t statistic: 2 P(T_df > |t|).
 double t_two_sided_p(double t, double df);
+
+// The two samples of a t-test read from a tidy table, one row per observation: `group` has exactly
+// two levels (first and second in order of first appearance; the difference is first - second).
+// Paired: one value per subject and level, the mean of its rows (as afex aggregates), subjects in
+// order of first appearance. InputError at the cell for a third or a single level, a subject without
+// an observation of a level, fewer than two subjects (paired) or observations per level (otherwise).
+struct TTestColumns {
+  std::string dv, group, subject;  // subject: needed when paired
+  bool paired = false;
+};
+struct TTestSamples {
+  std::vector<std::string> levels;  // the two levels of `group`
+  std::vector<double> first, second;
+  bool averaged = false;  // paired: a subject had more than one observation of a level
+};
+TTestSamples t_test_samples_from_table(const TidyCsv& table, const TTestColumns& columns);
 
 }  // namespace ms

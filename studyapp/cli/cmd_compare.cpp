@@ -17,6 +17,7 @@
 #include "analysis/noise_floor.hpp"
 #include "analysis/onset.hpp"
 #include "studyapp/cli/commands.hpp"
+#include "studyapp/cli/stats_output.hpp"
 #include "studyapp/plots/plots.hpp"
 #include "synthesis/audio_file.hpp"
 #include "synthesis/input_error.hpp"
@@ -71,7 +72,6 @@ std::vector<std::vector<double>> by_band(const BarkImage& img, std::size_t frame
   return out;
 }
 
-nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
 }  // namespace
 
@@ -160,7 +160,7 @@ void register_compare(CLI::App& app) {
                         {"match_ratio_b", s.match.estimate},
                         {"mrp", s.match.product},
                         {"modes", {{"a", a.modes.size()}, {"b", b.modes.size()}}}};
-      if (image && feature) j["hybrid"] = number_or_null(s.hybrid);
+      if (image && feature) j["hybrid"] = num_json(s.hybrid);
       if (!opt->plot_dir.empty()) j["plot_dir"] = opt->plot_dir;
       std::cout << j.dump() << "\n";
     } else {

@@ -18,6 +18,7 @@
 #include "analysis/tidy_csv.hpp"
 #include "studyapp/cli/commands.hpp"
 #include "studyapp/cli/prune_csv.hpp"
+#include "studyapp/cli/stats_output.hpp"
 #include "studyapp/plots/plots.hpp"
 #include "synthesis/input_error.hpp"
 #include "synthesis/masking_pruning.hpp"
@@ -32,19 +33,6 @@ using plots::PlotOptions;
 using plots::Series;
 using plots::XY;
 
-double parse_number(const std::string& text, const std::string& option) {
-  double v = 0;
-  auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (text.empty() || ec != std::errc() || ptr != text.data() + text.size() || !std::isfinite(v))
-    throw InputError(option + ": expected a finite number, got '" + text + "'");
-  return v;
-}
-
-std::string format_g(double v, int digits = 3) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-  return buf;
-}
 
 // The law c(lambda) sampled log-uniformly over [lo, hi], for drawing.
 std::vector<XY> sample_law(const DampingLaw& law, double lo, double hi, int n = 200) {
@@ -266,8 +254,8 @@ void register_plot(CLI::App& app) {
     const auto [model, r] = prune_modes_csv(opt->modes, o);
     const std::string name = fs::path(opt->modes).filename().string();
     plot_masking_model(model, r, opt->output,
-                       "Masking: " + name + " (a_v = " + format_g(o.threshold_db) + " dB, " +
-                           format_g(o.playback_db) + " dB SPL): " + std::to_string(r.kept.size()) + " of " +
+                       "Masking: " + name + " (a_v = " + format_g(o.threshold_db, 3) + " dB, " +
+                           format_g(o.playback_db, 3) + " dB SPL): " + std::to_string(r.kept.size()) + " of " +
                            std::to_string(model.modes.size()) + " modes kept");
     std::cout << "wrote " << opt->output << "\n";
   });

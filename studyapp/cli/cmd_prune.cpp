@@ -13,6 +13,7 @@
 #include "synthesis/masking_pruning.hpp"
 #include "studyapp/cli/commands.hpp"
 #include "studyapp/cli/prune_csv.hpp"
+#include "studyapp/cli/stats_output.hpp"
 #include "synthesis/input_error.hpp"
 #include "synthesis/modes_csv.hpp"
 
@@ -36,15 +37,6 @@ constexpr const char* kDescription =
     "indices; a level or threshold of minus infinity (amp 0, or no masker) is written as null.\n"
     "A mode with decay_per_s 0 has infinite power and is rejected.";
 
-// Option values are parsed here, not by CLI11, so that every bad value exits 2 with one line.
-double parse_number(const std::string& text, const std::string& option) {
-  double v = 0;
-  auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (text.empty() || ec != std::errc() || ptr != text.data() + text.size() || !std::isfinite(v))
-    throw InputError(option + ": expected a finite number, got '" + text + "'");
-  return v;
-}
-
 template <class T>
 T parse_choice(std::optional<T> parsed, const std::string& text, const std::string& option,
                const char* choices) {
@@ -54,7 +46,7 @@ T parse_choice(std::optional<T> parsed, const std::string& text, const std::stri
 
 nlohmann::json db_array(const std::vector<double>& v) {
   nlohmann::json a = nlohmann::json::array();
-  for (double x : v) a.push_back(std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr));
+  for (double x : v) a.push_back(num_json(x));
   return a;
 }
 

@@ -1,0 +1,71 @@
+// modalstudy stats anova: repeated-measures ANOVA (analysis/rm_anova.hpp) of a tidy CSV.
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <iostream>
+
+#include "analysis/rm_anova.hpp"
+#include "analysis/rm_data.hpp"
+#include "studyapp/cli/stats_commands.hpp"
+#include "studyapp/cli/stats_input.hpp"
+#include "studyapp/cli/stats_output.hpp"
+
+namespace ms::cli {
+
+void register_stats_anova(CLI::App& group) {
+  struct Options {
+    std::string data, dv, subject;
+    std::vector<std::string> within, between;
+    bool json = false;
+  };
+  auto opt = std::make_shared<Options>();
+  CLI::App* cmd = group.add_subcommand(
+      "anova", "Repeated-measures ANOVA (type III; GG/HF corrections, Mauchly, ges/pes), as afex::aov_ez");
+  auto in = std::make_shared<StatsInput>();
+  add_input_options(cmd, *in);
+  cmd->add_option("data", opt->data, "Tidy CSV, one row per observation")->required();
+  cmd->add_option("--dv", opt->dv, "Column of the dependent variable (numeric)")->required();
+  cmd->add_option("--subject", opt->subject, "Column identifying the subject (listener)")->required();
+  cmd->add_option("--within", opt->within, "Within-subject factor columns, comma separated")->required();
+  cmd->add_option("--between", opt->between, "Between-subject factor column(s)");
+  cmd->add_flag("--json", opt->json, "Print one JSON object");
+  cmd->callback([opt, in] {
+    const TidyCsv table = read_stats_table(opt->data, *in);
+    std::vector<std::string> notices;
+    const RmData data = rm_data_from_table(
+        table, RmColumns{opt->dv, opt->subject, split_commas(opt->within), split_commas(opt->between)}, notices);
+    const RmAnova a = located(opt->data, "column '" + opt->dv + "'", [&] { return rm_anova(data); });
+    print_notices(notices, opt->data);
+    if (opt->json) {
+      nlohmann::json effects = nlohmann::json::array();
+      for (const auto& e : a.effects)
+        effects.push_back({{"effect", e.name},      {"df1", e.df1},
+                           {"df2", e.df2},          {"F", num_json(e.F)},
+                           {"p", num_json(e.p)},    {"eps_gg", opt_json(e.eps_gg)},
+                           {"p_gg", num_json(e.p_gg)}, {"eps_hf", opt_json(e.eps_hf)},
+                           {"p_hf", num_json(e.p_hf)}, {"ges", num_json(e.ges)},
+                           {"pes", num_json(e.pes)}, {"mauchly_w", opt_json(e.mauchly_w)},
+                           {"mauchly_p", opt_json(e.mauchly_p)}, {"ss", e.ss},
+                           {"ss_error", e.ss_error}});
+      std::cout << nlohmann::json{{"effects", effects}, {"n_subjects", a.n_subjects}, {"notices", notices}}.dump()
+                << "\n";
+      return;
+    }
+    std::printf("Repeated-measures ANOVA of %s (%zu subjects; type III SS)\n", opt->dv.c_str(), a.n_subjects);
+    std::printf("%-24s %5s %6s %10s %8s %7s %7s %7s\n", "Effect", "Df1", "Df2", "F value", "Pr(>F)", "GG eps",
+                "HF eps", "ges");
+    for (const auto& e : a.effects)
+      std::printf("%-24s %5.0f %6.0f %10.4g %8s %7s %7s %7.4f\n", e.name.c_str(), e.df1, e.df2, e.F,
+                  fmt_p(e.p).c_str(), e.eps_gg ? fmt("%.4f", *e.eps_gg).c_str() : "",
+                  e.eps_hf ? fmt("%.4f", *e.eps_hf).c_str() : "", e.ges);
+    bool any_mauchly = false;
+    for (const auto& e : a.effects) any_mauchly |= e.mauchly_w.has_value();
+    if (any_mauchly) {
+      std::printf("\nMauchly's test for sphericity\n%-24s %10s %8s\n", "Effect", "W", "p");
+      for (const auto& e : a.effects)
+        if (e.mauchly_w) std::printf("%-24s %10.5f %8s\n", e.name.c_str(), *e.mauchly_w, fmt_p(*e.mauchly_p).c_str());
+    }
+  });
+}
+
+}  // namespace ms::cli
