@@ -4,11 +4,13 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include "synthesis/bounded_file.hpp"
 #include "synthesis/damping_law.hpp"
 #include "synthesis/masking_pruning.hpp"
 #include "synthesis/material.hpp"
+#include "synthesis/material_file.hpp"
 #include "synthesis/modes_csv.hpp"
 #include "synthesis/reference_objects.hpp"
 #include "synthesis/sha256.hpp"
@@ -151,6 +153,35 @@ ObjectSpec read_object(const YamlReader& r, const YAML::Node& node, double max_l
   return spec;
 }
 
+// A file the set names, relative to the set's folder; it must lie inside `confinement` (without one,
+// inside paramset_confinement of that folder).
+fs::path confined_file(const YamlReader& r, const YAML::Node& node, const std::string& key_path,
+                       const std::string& base_dir, const Confinement* confinement) {
+  const std::string written = r.text(node, key_path);
+  const Confinement own = confinement ? Confinement::anywhere() : paramset_confinement(base_dir);
+  const Confinement& allowed = confinement ? *confinement : own;
+  if (const std::string problem = allowed.problem(written, base_dir); !problem.empty())
+    r.fail(node, key_path, problem);
+  fs::path file(written);
+  if (file.is_relative()) file = fs::path(base_dir) / file;
+  return file;
+}
+
+// `material: {file: X.yaml}`: a material file (material_file.hpp), relative to the set's folder and
+// inside the set's confinement like a modes CSV.
+Material read_material_reference(const YamlReader& r, const YAML::Node& node, const std::string& base_dir,
+                                 const Confinement* confinement) {
+  r.check_keys(node, "material", {"file"});
+  if (!node["file"]) r.fail(node, "material", "expected a library id or {file: MATERIAL.yaml}");
+  const fs::path file = confined_file(r, node["file"], "material.file", base_dir, confinement);
+  try {
+    return read_material_file(file.string());
+  } catch (const InputError& e) {
+    if (e.where().line > 0) throw;
+    r.fail(node["file"], "material.file", "cannot use '" + file.string() + "': " + e.problem());
+  }
+}
+
 std::vector<Mode> read_inline_modes(const YamlReader& r, const YAML::Node& node) {
   std::vector<Mode> modes;
   for (std::size_t i = 0; i < node.size(); ++i) {
@@ -219,13 +250,7 @@ ParamSet parse_paramset(const std::string& yaml_text, const std::string& file,
     if (modes.IsSequence()) {
       p.model.modes = read_inline_modes(r, modes);
     } else if (modes.IsScalar()) {
-      const std::string written = r.text(modes, "modes");
-      const Confinement own = confinement ? Confinement::anywhere() : paramset_confinement(base_dir);
-      const Confinement& allowed = confinement ? *confinement : own;
-      if (const std::string problem = allowed.problem(written, base_dir); !problem.empty())
-        r.fail(modes, "modes", problem);
-      fs::path csv(written);
-      if (csv.is_relative()) csv = fs::path(base_dir) / csv;
+      const fs::path csv = confined_file(r, modes, "modes", base_dir, confinement);
       try {
         p.model = parse_modes_csv(read_bounded_file(csv.string(), kCsvFileLimit), csv.string());
       } catch (const InputError& e) {
@@ -257,7 +282,11 @@ ParamSet parse_paramset(const std::string& yaml_text, const std::string& file,
   } else {
     // Material: damping law, specific modulus and amplitude scale; each can be overridden.
     const Material* material = nullptr;
-    if (root["material"]) {
+    std::optional<Material> from_file;
+    if (root["material"] && root["material"].IsMap()) {
+      from_file = read_material_reference(r, root["material"], base_dir, confinement);
+      material = &*from_file;
+    } else if (root["material"]) {
       const std::string id = r.text(root["material"], "material");
       material = find_material(id);
       if (!material) {
