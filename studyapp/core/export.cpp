@@ -41,6 +41,18 @@ std::string number_cell(double v) {
 
 }  // namespace
 
+std::map<std::string, Protocol> stored_protocols(const ResultsStore& store) {
+  std::map<std::string, Protocol> protocols;
+  for (const StudyRecord& s : store.studies()) {
+    try {
+      protocols.emplace(s.id, parse_protocol(s.protocol_text, s.id + " (stored protocol)", "."));
+    } catch (const InputError&) {
+      // A protocol this version cannot read.
+    }
+  }
+  return protocols;
+}
+
 std::string iso8601_utc(std::int64_t unix_ms) {
   std::int64_t secs = unix_ms / 1000, ms = unix_ms % 1000;
   if (ms < 0) {
@@ -99,15 +111,7 @@ ExportSummary export_results(const std::string& db_path, const std::string& out_
                             std::to_string(e.session), e.block_id, e.block_type, std::to_string(e.trial_index), e.kind,
                             e.stimulus, e.stimulus_hash, e.detail_json, iso8601_utc(e.timestamp_ms)});
   // The stored protocol texts say what the responses do not (truth, factors, moduli, staircase rules).
-  std::map<std::string, Protocol> protocols;
-  for (const StudyRecord& s : store.studies()) {
-    try {
-      protocols.emplace(s.id, parse_protocol(s.protocol_text, s.id + " (stored protocol)", "."));
-    } catch (const InputError&) {
-      // A protocol this version cannot read: its tables get empty truth and factor cells.
-    }
-  }
-  const auto tables = tidy_tables(rows, protocols);
+  const auto tables = tidy_tables(rows, stored_protocols(store));
 
   std::map<std::string, std::size_t> per_study;
   for (const ResponseRow& r : rows) ++per_study[r.study];

@@ -1,4 +1,5 @@
-// draw_analysis_pictures: responses -> analysis (confusion_from_pairs, mushra describe) -> plots.
+// draw_analysis_pictures: responses -> analysis (confusion_from_pairs, mushra_boxes, ab_proportions,
+// magnitude_map) -> plots.
 #include "studyapp/gui/analysis_pictures.hpp"
 
 #include <cmath>
@@ -10,6 +11,7 @@
 
 #include "analysis/confusion.hpp"
 #include "analysis/mushra.hpp"
+#include "studyapp/core/block_summaries.hpp"
 #include "studyapp/core/mushra_boxes.hpp"
 #include "studyapp/plots/plots.hpp"
 
@@ -109,23 +111,76 @@ Picture staircase_picture(const std::string& block_id, const BlockRows& b, const
   return {o.title, path, svg_of(path)};
 }
 
+// Each pair's proportion as a mean with its interval on the 0-100 axis (no boxes: one number per pair).
+Picture ab_picture(const std::string& block_id, const std::vector<ResponseRow>& rows, const std::string& out_dir) {
+  std::vector<std::string> pairs;
+  std::vector<std::vector<double>> none;
+  std::vector<double> pct, low, high;
+  std::set<std::string> measures;
+  for (const AbProportion& p : ab_proportions(rows, block_id)) {
+    pairs.push_back(p.first + " / " + p.second + " (n=" + std::to_string(static_cast<unsigned>(p.test.trials)) + ")");
+    none.emplace_back();
+    pct.push_back(100 * p.test.proportion);
+    low.push_back(100 * p.test.ci_low);
+    high.push_back(100 * p.test.ci_high);
+    measures.insert(p.measure.rfind("chose", 0) == 0 ? "preferred" : p.measure);
+  }
+  std::string measure;
+  for (const std::string& m : measures) measure += (measure.empty() ? "" : " / ") + m;
+  plots::PlotOptions o;
+  o.width_px = 720;  // room for the legend line under the axis
+  o.height_px = 420;
+  o.title = block_id + ": proportion " + measure + " per pair (95 % Clopper-Pearson intervals)";
+  o.x_label = "Pair";
+  o.y_label = "Proportion " + measure + " (%)";
+  const std::string path = out_dir + "/" + block_id + "-ab.png";
+  for (const std::string& p : {path, svg_of(path)}) plots::mushra_boxplot(p, pairs, none, pct, low, high, o);
+  return {o.title, path, svg_of(path)};
+}
+
+// The perceptual map of the block's dissimilarities; a block whose design cannot be mapped says why.
+Picture magnitude_picture(const std::string& block_id, const std::vector<ResponseRow>& rows, const Protocol* protocol,
+                          const std::string& out_dir) {
+  const MagnitudeMap m = magnitude_map(rows, block_id, protocol);
+  std::vector<plots::XY> points;
+  for (std::size_t i = 0; i < m.labels.size(); ++i) points.push_back({m.x[i], m.y[i]});
+  plots::PlotOptions o;
+  o.width_px = 560;
+  o.height_px = 480;
+  o.title = m.problem.empty() ? block_id + ": magnitude estimates, classical MDS map (" + std::to_string(m.listeners) +
+                                    " listener" + (m.listeners == 1 ? "" : "s") + ")"
+                              : block_id + ": no MDS map (" + m.problem + ")";
+  o.x_label = "Dimension 1";
+  o.y_label = "Dimension 2";
+  const std::string path = out_dir + "/" + block_id + "-magnitude.png";
+  for (const std::string& p : {path, svg_of(path)}) plots::mds_map(p, points, m.labels, o);
+  return {o.title, path, svg_of(path)};
+}
+
 }  // namespace
 
-std::vector<Picture> draw_analysis_pictures(const std::vector<ResponseRow>& rows, const std::string& out_dir) {
+std::vector<Picture> draw_analysis_pictures(const std::vector<ResponseRow>& rows, const std::string& out_dir,
+                                            const std::map<std::string, Protocol>& protocols) {
+  static const std::set<std::string> drawn{"identify", "mushra", "staircase", "magnitude", "ab"};
   std::vector<std::string> order;
   std::map<std::string, BlockRows> blocks;
+  std::map<std::string, std::string> study_of;
   for (const ResponseRow& r : rows) {
-    if (r.block_type != "identify" && r.block_type != "mushra" && r.block_type != "staircase") continue;
+    if (!drawn.count(r.block_type)) continue;
     if (!blocks.count(r.block_id)) order.push_back(r.block_id);
     blocks[r.block_id].type = r.block_type;
     blocks[r.block_id].rows.push_back(&r);
+    study_of[r.block_id] = r.study;
   }
   std::vector<Picture> pictures;
   for (const std::string& id : order) {
     const BlockRows& b = blocks[id];
+    const auto protocol = protocols.find(study_of[id]);
     if (b.type == "identify") pictures.push_back(confusion_picture(id, b, out_dir));
     else if (b.type == "mushra") pictures.push_back(mushra_picture(id, b, out_dir));
-    else pictures.push_back(staircase_picture(id, b, out_dir));
+    else if (b.type == "staircase") pictures.push_back(staircase_picture(id, b, out_dir));
+    else if (b.type == "ab") pictures.push_back(ab_picture(id, rows, out_dir));
+    else pictures.push_back(magnitude_picture(id, rows, protocol == protocols.end() ? nullptr : &protocol->second, out_dir));
   }
   return pictures;
 }

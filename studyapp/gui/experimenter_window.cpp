@@ -106,7 +106,8 @@ void ExperimenterWindow::draw_pictures(const ResultsStore& store) {
     delete item;
   }
   picture_count_ = 0;
-  for (const Picture& p : draw_analysis_pictures(store.response_rows(), picture_dir_.path().toStdString())) {
+  for (const Picture& p :
+       draw_analysis_pictures(store.response_rows(), picture_dir_.path().toStdString(), stored_protocols(store))) {
     auto* heading = new QHBoxLayout;
     heading->addWidget(new QLabel("<b>" + QString::fromStdString(p.title) + "</b>", pictures_), 1);
     auto* save = new QPushButton("Save as PNG or SVG…", pictures_);
@@ -127,7 +128,7 @@ void ExperimenterWindow::draw_pictures(const ResultsStore& store) {
     ++picture_count_;
   }
   if (picture_count_ == 0)
-    pictures_layout_->addWidget(new QLabel("No identify, MUSHRA or staircase responses yet.", pictures_));
+    pictures_layout_->addWidget(new QLabel("No A/B, MUSHRA, magnitude, identify or staircase responses yet.", pictures_));
   pictures_layout_->addStretch();
 }
 

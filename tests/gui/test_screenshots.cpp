@@ -125,11 +125,11 @@ TEST(Screenshots, EveryViewRendersWithItsWidgets) {
   experimenter.show();
   ASSERT_TRUE(QTest::qWaitForWindowExposed(&experimenter));
   EXPECT_EQ(experimenter.sessions().rowCount(), 1);
-  EXPECT_EQ(experimenter.picture_count(), 3);  // identify confusion, MUSHRA boxes, staircase tracks
+  EXPECT_EQ(experimenter.picture_count(), 6);  // A/B x2, MUSHRA boxes, magnitude map, identify confusion, staircase tracks
   EXPECT_EQ(experimenter.sessions().item(0, 7)->text(), "participant");  // not simulated
   {
     const auto saves = children_with_prefix<QPushButton>(&experimenter, "savePicture");
-    ASSERT_EQ(saves.size(), 3u);
+    ASSERT_EQ(saves.size(), 6u);
     const QString png = saves[0]->property("png").toString();
     EXPECT_TRUE(experimenter.save_picture(png, QString::fromStdString(dir + "/picture.svg")));
     EXPECT_TRUE(experimenter.save_picture(png, QString::fromStdString(dir + "/picture.png")));
