@@ -42,6 +42,16 @@ ObjectEigen bar_object() {
   return {om.lambda0, om.gains[0]};
 }
 
+TEST(EstimateObject, AParameterSetsBarGivesTheReferenceBarsEigenvaluesWhateverItsMaterial) {
+  const ObjectEigen set = object_eigen_from_paramset(MODALSTUDY_SOURCE_DIR "/stimuli/bar/ren-wood.yaml");
+  const ObjectEigen bar = bar_object();
+  ASSERT_GE(set.lambda0.size(), 5u);
+  for (std::size_t i = 0; i < 5; ++i) {
+    EXPECT_NEAR(set.lambda0[i] / bar.lambda0[i], 1.0, 1e-6) << i;
+    EXPECT_NEAR(set.gain[i], bar.gain[i], 1e-6 * std::abs(bar.gain[i]) + 1e-12) << i;
+  }
+}
+
 class EstimateRenMaterial : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(EstimateRenMaterial, RecoversItOnTheBarFromANoiseFreeRender) {
