@@ -11,6 +11,7 @@
 
 #include "analysis/feature_extraction.hpp"
 #include "studyapp/cli/commands.hpp"
+#include "studyapp/cli/stats_output.hpp"
 #include "synthesis/atomic_file.hpp"
 #include "synthesis/audio_file.hpp"
 #include "synthesis/csv.hpp"
@@ -103,7 +104,7 @@ void register_extract(CLI::App& app) {
       for (const auto& [name, f] : results) {
         nlohmann::json modes = nlohmann::json::array();
         // Error bars: Cramer-Rao standard deviations; null where the data do not determine the value.
-        auto sd = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
+        const auto sd = num_json;
         for (std::size_t k = 0; k < f.modes.size(); ++k) {
           const Mode& m = f.modes[k];
           const ModePrecision& p = f.precision[k];

@@ -17,6 +17,7 @@
 #include "analysis/damping_fit.hpp"
 #include "analysis/emg_likelihood.hpp"
 #include "studyapp/cli/commands.hpp"
+#include "studyapp/cli/stats_output.hpp"
 #include "synthesis/atomic_file.hpp"
 #include "synthesis/csv.hpp"
 #include "synthesis/input_error.hpp"
@@ -25,11 +26,7 @@ namespace ms::cli {
 
 namespace {
 
-std::string format_g(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  return buf;
-}
+std::string format_g(double v) { return cli::format_g(v, 10); }
 
 // Per point: the data, the fitted c and the residual, for plotting (sorted as in the input).
 std::string plot_data_csv(const std::vector<DampingFeature>& features, const std::vector<DampingPoint>& points,
