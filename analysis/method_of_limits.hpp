@@ -22,10 +22,6 @@ struct LimitsThreshold {
 // `levels` must fall strictly from trial to trial (throws std::invalid_argument naming the trial).
 LimitsThreshold descending_limits_threshold(const std::vector<double>& levels, const std::vector<bool>& different);
 
-}  // namespace ms
-
-namespace ms {
-
 // The series of a tidy table, one row per trial in presentation order, grouped by the `track`
 // columns (in order of first appearance): the level of each trial and whether the answer was
 // `different`. InputError at the cell for a level that is not a number or does not fall below the

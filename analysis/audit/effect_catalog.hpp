@@ -56,9 +56,7 @@ Detection detect_by_gap_improvement(const AuditData& data, const AuditModel& cur
                                     void (*extend)(const AuditData&, AuditModel&, const std::vector<std::size_t>&),
                                     double min_improvement_db, GapEvidence evidence);
 
-}  // namespace ms::audit
-
-namespace ms::audit {
 // White-noise standard deviation with the noise_floor extension's total power (full scale 1).
 double noise_white_sigma(const AuditData& data, const AuditModel& model);
+
 }  // namespace ms::audit

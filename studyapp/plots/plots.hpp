@@ -96,10 +96,6 @@ void masking_plot(const std::string& path, const std::vector<double>& freq_hz,
                   const std::vector<double>& quiet_threshold_db, const std::vector<bool>& kept,
                   const PlotOptions& options);
 
-}  // namespace ms::plots
-
-namespace ms::plots {
-
 // 7. Audit residual map: diff_db_by_band[band][frame] (model - measured, dB; NaN = below the floor in
 // both, drawn grey) over [0, duration_s], diverging colours saturating at +-limit_db, with a colour bar.
 void residual_map(const std::string& path, const std::vector<std::vector<double>>& diff_db_by_band,
