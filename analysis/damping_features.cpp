@@ -2,6 +2,7 @@
 #include "analysis/damping_features.hpp"
 
 #include <cmath>
+#include <numbers>
 
 #include "analysis/tidy_csv.hpp"
 #include "synthesis/input_error.hpp"
@@ -47,7 +48,7 @@ std::vector<DampingFeature> read_damping_features_csv(const std::string& path) {
 }
 
 DampingPoint damping_point(double freq_hz, double decay_per_s) {
-  const double omega_d = 2.0 * M_PI * freq_hz;
+  const double omega_d = 2.0 * std::numbers::pi * freq_hz;
   return DampingPoint{omega_d * omega_d + decay_per_s * decay_per_s, 2.0 * decay_per_s};
 }
 

@@ -1,6 +1,7 @@
 #include "analysis/mds_cityblock.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <random>
 
 namespace ms {
@@ -88,7 +89,7 @@ SmacofResult smacof_cityblock(const Eigen::MatrixXd& delta, const SmacofOptions&
   std::vector<Eigen::MatrixXd> starts;
   if (options.dims == 2) {
     for (int deg = 0; deg < 90; deg += 15) {
-      const double t = deg * M_PI / 180.0;
+      const double t = deg * std::numbers::pi / 180.0;
       Eigen::Matrix2d rot;
       rot << std::cos(t), -std::sin(t), std::sin(t), std::cos(t);
       starts.push_back(euclid.points * rot);

@@ -1,6 +1,7 @@
 #include "synthesis/damping_law.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 namespace ms {
@@ -49,12 +50,12 @@ ModalModel modes_from_eigenvalues(const std::vector<double>& lambda0, const Damp
       continue;
     }
     Mode m;
-    m.freq_hz = std::sqrt(omega_d_sq) / (2.0 * M_PI);
+    m.freq_hz = std::sqrt(omega_d_sq) / (2.0 * std::numbers::pi);
     m.decay_per_s = d;
     // A negative mode-shape value is a phase inversion: keep amp >= 0 and carry the sign as phase pi.
     const double a = amp_scale * (i < gains.size() ? gains[i] : 1.0);
     m.amp = std::abs(a);
-    m.phase_rad = a < 0 ? M_PI : 0.0;
+    m.phase_rad = a < 0 ? std::numbers::pi : 0.0;
     model.modes.push_back(m);
   }
   if (overdamped) *overdamped = dropped;

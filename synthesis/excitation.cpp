@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 namespace ms {
@@ -23,8 +24,8 @@ double Excitation::force(double t) const {
   if (shape == PulseShape::impulse || contact_s <= 0.0) return 0.0;
   if (t < 0.0 || t > contact_s) return 0.0;
   const double x = t / contact_s;
-  if (shape == PulseShape::raised_cosine) return (1.0 - std::cos(2.0 * M_PI * x)) / contact_s;
-  return std::pow(std::sin(M_PI * x), 1.5) / (kHertzArea * contact_s);
+  if (shape == PulseShape::raised_cosine) return (1.0 - std::cos(2.0 * std::numbers::pi * x)) / contact_s;
+  return std::pow(std::sin(std::numbers::pi * x), 1.5) / (kHertzArea * contact_s);
 }
 
 PulseShape parse_pulse_shape(const std::string& name) {
@@ -50,7 +51,7 @@ std::complex<double> contact_integral(const Excitation& e, std::complex<double> 
   if (t <= 0.0) return 0.0;
   // Enough panels that each spans at most a quarter period of the mode.
   const double omega = std::abs(p.imag());
-  const int panels = std::max(4, int(std::ceil(t * omega / (M_PI / 2.0))) + 1);
+  const int panels = std::max(4, int(std::ceil(t * omega / (std::numbers::pi / 2.0))) + 1);
   const double h = t / panels;
   std::complex<double> sum = 0.0;
   for (int k = 0; k < panels; ++k) {
@@ -66,7 +67,7 @@ std::complex<double> contact_integral(const Excitation& e, std::complex<double> 
 }
 
 std::complex<double> contact_factor(const Excitation& e, double decay_per_s, double freq_hz) {
-  const std::complex<double> p(-decay_per_s, 2.0 * M_PI * freq_hz);
+  const std::complex<double> p(-decay_per_s, 2.0 * std::numbers::pi * freq_hz);
   return contact_integral(e, p, e.contact_s);
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 namespace ms {
@@ -13,7 +14,7 @@ ModalModel at_hit_point(const ModalModel& model, std::size_t index) {
   const auto& g = model.hit_gains[index];
   for (std::size_t n = 0; n < out.modes.size() && n < g.size(); ++n) {
     out.modes[n].amp *= std::abs(g[n]);
-    if (g[n] < 0) out.modes[n].phase_rad += M_PI;  // amp stays >= 0; the sign is a phase
+    if (g[n] < 0) out.modes[n].phase_rad += std::numbers::pi;  // amp stays >= 0; the sign is a phase
   }
   return out;
 }

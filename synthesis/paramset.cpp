@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <numbers>
 #include <optional>
 
 #include "synthesis/bounded_file.hpp"
@@ -325,9 +326,9 @@ ParamSet parse_paramset(const std::string& yaml_text, const std::string& file,
       const double f0 = r.positive(root["fundamental_hz"], "fundamental_hz");
       if (f0 >= nyquist) r.fail(root["fundamental_hz"], "fundamental_hz", "at or above Nyquist");
       const ObjectSpec first = read_object(r, root["object"], 0.0, true);
-      scale = std::pow(2.0 * M_PI * f0, 2) / first.lambda0.at(0);
+      scale = std::pow(2.0 * std::numbers::pi * f0, 2) / first.lambda0.at(0);
     }
-    const double max_lambda0 = std::pow(2.0 * M_PI * nyquist, 2) * 1.2 / scale;  // damping lowers f
+    const double max_lambda0 = std::pow(2.0 * std::numbers::pi * nyquist, 2) * 1.2 / scale;  // damping lowers f
     const ObjectSpec spec = read_object(r, root["object"], max_lambda0, false);
     // The hit point sets the amplitudes: the mode shapes at that point.
     std::size_t hit_index = 0;

@@ -5,6 +5,7 @@
 #include <boost/math/special_functions/bessel_prime.hpp>
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
+#include <numbers>
 #include <numeric>
 
 namespace ms {
@@ -42,7 +43,7 @@ double bar_shape(double b, double x_rel) {
 }  // namespace
 
 double free_bar_root(int n) {
-  const double guess = (n + 0.5) * M_PI;
+  const double guess = (n + 0.5) * std::numbers::pi;
   auto f = [](double x) { return std::cos(x) - 1.0 / std::cosh(x); };
   return bracketed_root(f, guess - 0.5, guess + 0.5);
 }

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <complex>
+#include <numbers>
 
 namespace ms {
 
@@ -10,7 +11,7 @@ std::vector<double> render_reference(const ModalModel& model, const Excitation& 
   std::vector<double> y(frames, 0.0);
   const bool impulse = excitation.shape == PulseShape::impulse || excitation.contact_s <= 0.0;
   for (const Mode& m : model.modes) {
-    const double omega = 2.0 * M_PI * m.freq_hz;
+    const double omega = 2.0 * std::numbers::pi * m.freq_hz;
     const std::complex<double> p(-m.decay_per_s, omega);
     const std::complex<double> g = excitation.gain * std::polar(m.amp, m.phase_rad);
     const std::complex<double> after = impulse ? g : g * contact_factor(excitation, m.decay_per_s,

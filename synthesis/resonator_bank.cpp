@@ -5,6 +5,7 @@
 #include <cmath>
 #include <complex>
 #include <cstring>
+#include <numbers>
 
 #if defined(__SSE__)
 #include <xmmintrin.h>
@@ -95,7 +96,7 @@ ResonatorBank::ResonatorBank(const ModalModel& model, const Excitation& excitati
 
   for (std::size_t m = 0; m < mode_count_; ++m) {
     const Mode& mode = model.modes[m];
-    const std::complex<double> p(-mode.decay_per_s, 2.0 * M_PI * mode.freq_hz);
+    const std::complex<double> p(-mode.decay_per_s, 2.0 * std::numbers::pi * mode.freq_hz);
     const std::complex<double> g = excitation.gain * std::polar(mode.amp, mode.phase_rad);
     const std::complex<double> pole = std::exp(p * T);
     std::complex<double> z = g;  // state at sample 0 for the impulse: y[0] = Im g

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "synthesis/effects.hpp"
 #include "synthesis/excitation.hpp"
@@ -25,8 +26,8 @@ double contact_gain(double contact_s, double decay_per_s, double freq_hz) {
   if (contact_s <= 0.0) return 1.0;
   // Closed form of contact_factor for the raised cosine (the fits call this ~10^6 times):
   // G = (1 - e^{-p tau}) w0^2 / (tau p (p^2 + w0^2)), p = -d + i omega, w0 = 2 pi / tau.
-  const std::complex<double> p(-decay_per_s, 2.0 * M_PI * freq_hz);
-  const double w0 = 2.0 * M_PI / contact_s;
+  const std::complex<double> p(-decay_per_s, 2.0 * std::numbers::pi * freq_hz);
+  const double w0 = 2.0 * std::numbers::pi / contact_s;
   const std::complex<double> den = contact_s * p * (p * p + w0 * w0);
   if (std::abs(den) < 1e-12 * w0 * w0 * w0 * contact_s) {  // p = +-i w0: the removable singularity
     Excitation e;
@@ -73,7 +74,7 @@ void add_decaying_noise_power(BarkSpectrogram& spec, const SpectrogramGrid& g, d
   const double r = std::exp(-2.0 * std::log(1000.0) / (t60_s * g.sample_rate_hz));
   double frame0 = 0.0, ri = 1.0;
   for (std::size_t i = 0; i < g.window; ++i, ri *= r) {
-    const double w = 0.5 - 0.5 * std::cos(2.0 * M_PI * double(i) / double(g.window));
+    const double w = 0.5 - 0.5 * std::cos(2.0 * std::numbers::pi * double(i) / double(g.window));
     frame0 += w * w * ri;
   }
   const double per_hop = std::pow(r, double(g.hop));

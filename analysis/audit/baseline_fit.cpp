@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <sstream>
 
 namespace ms::audit {
@@ -98,7 +99,7 @@ std::vector<DampingPoint> track_median_points(const AuditData& data, const std::
 void apply_law(AuditModel& model) {
   for (AuditMode& m : model.modes) {
     if (m.track < 0) continue;
-    const double omega = 2.0 * M_PI * m.freq_hz;
+    const double omega = 2.0 * std::numbers::pi * m.freq_hz;
     m.decay_per_s = std::max(1e-3, model.law.decay_per_s(omega * omega));
   }
 }

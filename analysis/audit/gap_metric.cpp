@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "synthesis/bark.hpp"
 #include "synthesis/fft.hpp"
@@ -48,7 +49,7 @@ SpectrogramGrid make_grid(double fs, std::size_t samples, double window_s, std::
   for (std::size_t k = 1; k < bins; ++k) ++g.band_bins[std::size_t(g.bin_band[k])];
   g.window_energy = 0.0;
   for (std::size_t i = 0; i < g.window; ++i) {
-    const double w = 0.5 - 0.5 * std::cos(2.0 * M_PI * double(i) / double(g.window));
+    const double w = 0.5 - 0.5 * std::cos(2.0 * std::numbers::pi * double(i) / double(g.window));
     g.window_energy += w * w;
   }
   return g;
@@ -65,7 +66,7 @@ BarkSpectrogram bark_spectrogram(const std::vector<float>& x, const SpectrogramG
   double* in = fft.real();
   const std::complex<double>* out = fft.spectrum();
   std::vector<double> w(g.window);
-  for (std::size_t i = 0; i < g.window; ++i) w[i] = 0.5 - 0.5 * std::cos(2.0 * M_PI * double(i) / double(g.window));
+  for (std::size_t i = 0; i < g.window; ++i) w[i] = 0.5 - 0.5 * std::cos(2.0 * std::numbers::pi * double(i) / double(g.window));
   for (std::size_t f = 0; f < g.frames; ++f) {
     const std::size_t start = f * g.hop;
     for (std::size_t i = 0; i < g.window; ++i)

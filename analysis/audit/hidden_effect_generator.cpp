@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <random>
 #include <stdexcept>
 
@@ -56,18 +57,18 @@ HiddenCase generate_hidden_case(std::uint64_t seed, const std::vector<std::strin
   std::sort(freqs.begin(), freqs.end());
   const double a1 = 1.0 + 7.0 * U(rng);                   // c = 2d at 0 Hz, 1/s
   const double c5k = 15.0 + 45.0 * U(rng);                // c at 5 kHz
-  const double lambda5k = std::pow(2.0 * M_PI * 5000.0, 2);
+  const double lambda5k = std::pow(2.0 * std::numbers::pi * 5000.0, 2);
   const double a2 = (c5k - a1) / lambda5k;
   // damping_law: a hybrid law with exponent 1 -+ (0.15 .. 0.4), equal to the Rayleigh law at 1 kHz.
   double a3 = 1.0, a2h = a2;
   if (has(effects, "damping_law")) {
     const double u = strength_of(effects, strengths, "damping_law");
     a3 = 1.0 + (U(rng) < 0.5 ? -1.0 : 1.0) * (0.15 + 0.25 * u);
-    const double lg = std::pow(2.0 * M_PI * 1000.0, 2);
+    const double lg = std::pow(2.0 * std::numbers::pi * 1000.0, 2);
     a2h = a2 * lg / std::pow(lg, a3);
   }
   for (double f : freqs) {
-    const double lambda = std::pow(2.0 * M_PI * f, 2);
+    const double lambda = std::pow(2.0 * std::numbers::pi * f, 2);
     const double c = a1 + a2h * std::pow(lambda, a3);
     hc.object.modes.push_back({f, 0.5 * c, std::pow(10.0, -30.0 * U(rng) / 20.0), 0.0});
   }

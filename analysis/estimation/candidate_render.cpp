@@ -1,6 +1,7 @@
 #include "analysis/estimation/candidate_render.hpp"
 
 #include <cmath>
+#include <numbers>
 
 #include "synthesis/damping_law.hpp"
 #include "synthesis/paramset.hpp"
@@ -21,7 +22,7 @@ ObjectEigen object_eigen_from_paramset(const std::string& path) {
              "specific_modulus_m2_s2=" + std::to_string(kProbeModulus), "amp_scale=1"});
   ObjectEigen out;
   for (const Mode& m : set.model.modes) {
-    const double omega = 2.0 * M_PI * m.freq_hz;
+    const double omega = 2.0 * std::numbers::pi * m.freq_hz;
     out.lambda0.push_back(omega * omega / kProbeModulus);
     out.gain.push_back(std::cos(m.phase_rad) < 0 ? -m.amp : m.amp);
   }

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <complex>
+#include <numbers>
 
 #include "analysis/audit/gap_location.hpp"
 #include "analysis/audit/given_model.hpp"
@@ -38,7 +39,7 @@ TEST(AuditGivenModel, FoldsTheStrikeGainAndTheContactIntoTheAmplitudes) {
   // Against the raised cosine's spectrum for an undamped mode, |sin(pi f tau)/(pi f tau)| / |1 - (f tau)^2|
   // (the decays, 6 and 20 1/s, move it by up to 1 % near the pulse's spectral zeros).
   auto undamped = [](double f_tau) {
-    return std::abs(std::sin(M_PI * f_tau) / (M_PI * f_tau)) / std::abs(1.0 - f_tau * f_tau);
+    return std::abs(std::sin(std::numbers::pi * f_tau) / (std::numbers::pi * f_tau)) / std::abs(1.0 - f_tau * f_tau);
   };
   EXPECT_NEAR(contact.modes[0].amp / 0.5, undamped(0.44), 0.01 * undamped(0.44));
   EXPECT_NEAR(contact.modes[1].amp / 0.3, undamped(5.2), 0.02 * undamped(5.2));

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <random>
 
 #include "analysis/audit/audit.hpp"
@@ -21,7 +22,7 @@ namespace {
 TEST(AuditGap, SineBandPowerIsParsevals) {
   const double fs = 44100, a = 0.5, f = 1000.0;
   std::vector<float> x(44100);
-  for (std::size_t i = 0; i < x.size(); ++i) x[i] = float(a * std::sin(2 * M_PI * f * double(i) / fs));
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] = float(a * std::sin(2 * std::numbers::pi * f * double(i) / fs));
   const SpectrogramGrid g = make_grid(fs, x.size());
   EXPECT_EQ(g.window, 1024u);
   EXPECT_EQ(g.hop, 512u);
@@ -70,7 +71,7 @@ TEST(AuditGap, AttackResolutionSeesAShortBurst) {
   std::normal_distribution<double> N(0, 0.05);
   for (std::size_t i = 0; i < ring.size(); ++i) {
     const double t = double(i) / fs;
-    ring[i] = float(0.3 * std::exp(-3.0 * t) * std::sin(2 * M_PI * 880.0 * t));
+    ring[i] = float(0.3 * std::exp(-3.0 * t) * std::sin(2 * std::numbers::pi * 880.0 * t));
     burst[i] = ring[i] + float(i < 132 ? N(rng) : 0.0);
   }
   const Spectra clean = bark_spectra(ring, g), noisy = bark_spectra(burst, g);
@@ -96,7 +97,7 @@ TEST(AuditMatching, MergesCloseModesAndDropsRareOnes) {
 TEST(AuditLawFit, RecoversRayleighAndHybridExactly) {
   std::vector<DampingPoint> r, h;
   for (double f : {200.0, 500.0, 900.0, 1500.0, 2500.0, 4000.0, 6500.0}) {
-    const double lambda = std::pow(2 * M_PI * f, 2);
+    const double lambda = std::pow(2 * std::numbers::pi * f, 2);
     r.push_back({lambda, 3.0 + 2e-8 * lambda});
     h.push_back({lambda, 2.0 + 4e-6 * std::pow(lambda, 0.7)});
   }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <boost/math/distributions/normal.hpp>
 #include <cmath>
+#include <numbers>
 #include <numeric>
 #include <random>
 
@@ -27,7 +28,7 @@ double rel_err(double estimate, double truth) { return std::abs(estimate - truth
 std::vector<double> random_lambdas(std::mt19937_64& rng, std::size_t n) {
   std::uniform_real_distribution<double> logf(std::log(100.0), std::log(15000.0));
   std::vector<double> l(n);
-  for (auto& v : l) v = std::pow(2 * M_PI * std::exp(logf(rng)), 2);
+  for (auto& v : l) v = std::pow(2 * std::numbers::pi * std::exp(logf(rng)), 2);
   return l;
 }
 

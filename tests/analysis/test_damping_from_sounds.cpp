@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <numeric>
 #include <random>
 #include <string>
@@ -42,7 +43,7 @@ std::vector<std::vector<DampingPoint>> extracted_strikes(const DampingLaw& law, 
   for (std::size_t s = 0; s < count; ++s) {
     std::vector<double> lambdas, gains;
     for (int i = 0; i < 15; ++i) {
-      lambdas.push_back(std::pow(2.0 * M_PI * 100.0 * std::pow(150.0, unit(rng)), 2));
+      lambdas.push_back(std::pow(2.0 * std::numbers::pi * 100.0 * std::pow(150.0, unit(rng)), 2));
       gains.push_back(std::pow(10.0, -30.0 * unit(rng) / 20.0));
     }
     ModalModel model = modes_from_eigenvalues(lambdas, law, 1.0, 0.3, gains, nullptr);

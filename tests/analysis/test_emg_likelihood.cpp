@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <random>
 
 #include "analysis/emg_likelihood.hpp"
@@ -23,7 +24,7 @@ std::vector<DampingPoint> emg_points(const DampingLaw& law, std::size_t n, unsig
   std::normal_distribution<double> noise(0.0, 0.5);
   std::vector<DampingPoint> pts;
   for (std::size_t i = 0; i < n; ++i) {
-    const double omega = 2 * M_PI * std::exp(logf(rng));
+    const double omega = 2 * std::numbers::pi * std::exp(logf(rng));
     const double lambda = omega * omega;
     pts.push_back({lambda, ms::damping_c_per_s(law, lambda) + excess(rng) + noise(rng)});
   }
@@ -123,7 +124,7 @@ TEST(EmgLikelihood, PaperRayleighGradientWithMisprintFixed) {
   for (const auto& p : pts) {
     const double model = ms::damping_c_per_s(law, p.lambda_rad2_s2);
     const double s = (model + eta * sigma * sigma - p.c_per_s) / (std::sqrt(2.0) * sigma);
-    const double t = -2.0 / (ms::erfcx(s) * std::sqrt(M_PI));
+    const double t = -2.0 / (ms::erfcx(s) * std::sqrt(std::numbers::pi));
     d_eta += model - p.c_per_s + t * sigma / std::sqrt(2.0);
     d_sigma += t * (eta * sigma * sigma + p.c_per_s - model) / (std::sqrt(2.0) * sigma * sigma);
     d_a1 += t / (std::sqrt(2.0) * sigma);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <numbers>
 #include <random>
 
 #include "analysis/feature_extraction.hpp"
@@ -54,7 +55,7 @@ TEST(NoiseEnvelope, FollowsADecayingTail) {
 TEST(NoiseEnvelope, WeightedFitGainCreditsWhatAComponentExplains) {
   const std::size_t n = 44100;
   NoiseEnvelope flat{64, {}, 1e-6};
-  const DampedComponent mode{std::complex<double>(-5.0, 2.0 * M_PI * 1000.0) / kFs, {0.1, 0.0}};
+  const DampedComponent mode{std::complex<double>(-5.0, 2.0 * std::numbers::pi * 1000.0) / kFs, {0.1, 0.0}};
   const std::vector<double> zero(n, 0.0);
   const double energy = component_energy(mode, 0, n);
   // The data hold the mode exactly: the residual is zero.
@@ -65,7 +66,7 @@ TEST(NoiseEnvelope, WeightedFitGainCreditsWhatAComponentExplains) {
   NoiseEnvelope tail{64, std::vector<double>(loud / 64, 1e-6), 1e-12};
   std::vector<double> noise = decaying_noise(n, 1e-3, 1e9, 0.0, 3);
   for (std::size_t i = loud; i < n; ++i) noise[i] *= 1e-3;
-  const DampedComponent fake{std::complex<double>(-5.0, 2.0 * M_PI * 1000.0) / kFs, {1e-3, 0.0}};
+  const DampedComponent fake{std::complex<double>(-5.0, 2.0 * std::numbers::pi * 1000.0) / kFs, {1e-3, 0.0}};
   std::vector<double> residual = noise;  // the data is noise only: residual = data - fake
   const std::vector<double> minus = subtract_components(zero, {fake}, n);
   for (std::size_t i = 0; i < n; ++i) residual[i] += minus[i];

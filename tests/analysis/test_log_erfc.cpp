@@ -4,6 +4,7 @@
 
 #include <boost/math/special_functions/erf.hpp>
 #include <cmath>
+#include <numbers>
 
 #include "analysis/log_erfc.hpp"
 
@@ -58,7 +59,7 @@ TEST(LogErfc, SlopeIsDerivativeAndErfcxIsScaledErfc) {
     double le = 0, slope = 0;
     ms::log_erfc_with_slope(x, &le, &slope);
     EXPECT_EQ(le, ms::log_erfc(x));
-    EXPECT_NEAR(slope, -2.0 / (std::sqrt(M_PI) * ms::erfcx(x)), 1e-15 * std::abs(slope) + 1e-300);
+    EXPECT_NEAR(slope, -2.0 / (std::sqrt(std::numbers::pi) * ms::erfcx(x)), 1e-15 * std::abs(slope) + 1e-300);
     if (x > -20 && x < 1e5) {  // central difference, relative step
       const double h = 1e-5 * std::max(1.0, std::abs(x));
       const double fd = (ms::log_erfc(x + h) - ms::log_erfc(x - h)) / (2 * h);

@@ -4,6 +4,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <numbers>
 #include <random>
 
 #include "analysis/damping_fit.hpp"
@@ -24,7 +25,7 @@ std::vector<ms::DampingPoint> porcelain_features() {
   double strike_mean = 1.0;
   for (int i = 0; i < 752; ++i) {
     if (i % 25 == 0) strike_mean = mean(rng);
-    const double omega = 2 * M_PI * std::exp(logf(rng));
+    const double omega = 2 * std::numbers::pi * std::exp(logf(rng));
     const double lambda = omega * omega;
     pts.push_back({lambda, ms::damping_c_per_s(law, lambda) + strike_mean * excess(rng) + noise(rng)});
   }

@@ -3,6 +3,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <numbers>
 #include <random>
 
 #include "synthesis/resonator_bank.hpp"
@@ -40,7 +41,7 @@ void BM_NaiveClosedForm(benchmark::State& state) {
   for (auto _ : state) {
     std::fill(out.begin(), out.end(), 0.0);
     for (const Mode& mode : m.modes) {
-      const double w = 2 * M_PI * mode.freq_hz;
+      const double w = 2 * std::numbers::pi * mode.freq_hz;
       for (std::size_t n = 0; n < kFrames; ++n) {
         const double t = double(n) / kFs;
         out[n] += mode.amp * std::exp(-mode.decay_per_s * t) * std::sin(w * t);
@@ -69,7 +70,7 @@ void BM_StkStyleBiquadBank(benchmark::State& state) {
   for (auto _ : state) {
     std::vector<BiQuad> bank(m.modes.size());
     for (std::size_t i = 0; i < bank.size(); ++i) {
-      const double r = std::exp(-m.modes[i].decay_per_s / kFs), w = 2 * M_PI * m.modes[i].freq_hz / kFs;
+      const double r = std::exp(-m.modes[i].decay_per_s / kFs), w = 2 * std::numbers::pi * m.modes[i].freq_hz / kFs;
       bank[i].a1 = -2 * r * std::cos(w);
       bank[i].a2 = r * r;
       bank[i].b0 = m.modes[i].amp * r * std::sin(w);

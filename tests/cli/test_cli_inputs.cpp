@@ -12,6 +12,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 #include <thread>
 
@@ -90,7 +91,7 @@ TEST(CliInputs, DoubletSplitsAreRangeCheckedAndContactRendersStayBounded) {
 TEST(CliInputs, CutOffWavsConstantSignalsAndNegativeChannelsAreNamedPrecisely) {
   TempDir dir;
   std::vector<float> x(22050);
-  for (std::size_t n = 0; n < x.size(); ++n) x[n] = float(0.5 * std::exp(-8.0 * n / 44100) * std::sin(2 * M_PI * 440 * n / 44100));
+  for (std::size_t n = 0; n < x.size(); ++n) x[n] = float(0.5 * std::exp(-8.0 * n / 44100) * std::sin(2 * std::numbers::pi * 440 * n / 44100));
   ms::write_wav(dir.file("full.wav"), ms::Audio{44100, 1, x}, ms::SampleFormat::pcm16);
   const std::string full = [&] {
     std::ifstream in(dir.file("full.wav"), std::ios::binary);

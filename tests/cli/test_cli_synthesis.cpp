@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 
 #include "support/test_util.hpp"
 #include "synthesis/audio_file.hpp"
@@ -34,7 +35,7 @@ TEST(CliSynth, RendersWavAndJson) {
   EXPECT_EQ(j["recipe_hash"].get<std::string>().size(), 64u);
   const Audio a = read_audio(dir.file("out.wav"));
   EXPECT_EQ(a.frames(), 11025u);
-  EXPECT_NEAR(a.samples[100], std::exp(-3.0 * 100 / 44100) * std::sin(2 * M_PI * 440 * 100 / 44100), 1e-6);
+  EXPECT_NEAR(a.samples[100], std::exp(-3.0 * 100 / 44100) * std::sin(2 * std::numbers::pi * 440 * 100 / 44100), 1e-6);
   std::ifstream csv(dir.file("modes.csv"));
   std::string header;
   std::getline(csv, header);

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <numbers>
 
 #include "support/test_util.hpp"
 #include "synthesis/audio_file.hpp"
@@ -18,7 +19,7 @@ Audio sine(double fs, int channels, std::size_t frames, double amp) {
   a.channels = channels;
   for (std::size_t n = 0; n < frames; ++n)
     for (int c = 0; c < channels; ++c)
-      a.samples.push_back(float(amp * std::sin(2 * M_PI * (440.0 + 100 * c) * n / fs)));
+      a.samples.push_back(float(amp * std::sin(2 * std::numbers::pi * (440.0 + 100 * c) * n / fs)));
   return a;
 }
 }  // namespace

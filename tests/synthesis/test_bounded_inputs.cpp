@@ -12,6 +12,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 
 #include "support/test_util.hpp"
 #include "synthesis/audio_file.hpp"
@@ -76,7 +77,7 @@ std::string wav_bytes(std::size_t frames, std::int64_t declared = -1, std::size_
   b += "data";
   u32(declared >= 0 ? std::uint32_t(declared) : data);
   for (std::size_t n = 0; n < frames; ++n)
-    u16(std::uint16_t(std::int16_t(20000 * std::exp(-5.0 * n / 44100) * std::sin(2 * M_PI * 440 * n / 44100))));
+    u16(std::uint16_t(std::int16_t(20000 * std::exp(-5.0 * n / 44100) * std::sin(2 * std::numbers::pi * 440 * n / 44100))));
   if (keep < b.size()) b.resize(keep);
   return b;
 }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "synthesis/effects.hpp"
 #include "synthesis/paramset.hpp"
@@ -74,7 +75,7 @@ material: sterling2019/glass
 
 TEST(BackgroundNoise, SnrIsAsAskedAndSeeded) {
   std::vector<float> y(44100);
-  for (std::size_t n = 0; n < y.size(); ++n) y[n] = float(0.5 * std::sin(2 * M_PI * 440.0 * n / 44100.0));
+  for (std::size_t n = 0; n < y.size(); ++n) y[n] = float(0.5 * std::sin(2 * std::numbers::pi * 440.0 * n / 44100.0));
   std::vector<float> a = y, b = y;
   add_background_noise(a, BackgroundNoise{30.0, 9, true});
   add_background_noise(b, BackgroundNoise{30.0, 9, true});
@@ -108,7 +109,7 @@ std::vector<float> difference(const std::vector<float>& a, const std::vector<flo
 TEST(ReverbAndTransient, LevelAndDecayAreAsAskedAndSeeded) {
   const double fs = 44100.0;
   std::vector<float> y(std::size_t(2 * fs));
-  for (std::size_t n = 0; n < y.size(); ++n) y[n] = float(0.5 * std::exp(-3.0 * n / fs) * std::sin(2 * M_PI * 440.0 * n / fs));
+  for (std::size_t n = 0; n < y.size(); ++n) y[n] = float(0.5 * std::exp(-3.0 * n / fs) * std::sin(2 * std::numbers::pi * 440.0 * n / fs));
   std::vector<float> a = y, b = y;
   add_reverb_and_transient(a, fs, Reverb{0.5, -20.0, 4, true}, AttackTransient{});
   add_reverb_and_transient(b, fs, Reverb{0.5, -20.0, 4, true}, AttackTransient{});

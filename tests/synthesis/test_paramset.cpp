@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "support/test_util.hpp"
 #include "synthesis/input_error.hpp"
@@ -50,7 +51,7 @@ TEST(ParamSet, MinimalFormRendersTheFormulaExactly) {
   double worst = 0;
   for (std::size_t n = 0; n < r.audio.frames(); ++n) {
     const double t = n / 44100.0;
-    worst = std::max(worst, std::abs(r.audio.samples[n] - std::exp(-3.0 * t) * std::sin(2 * M_PI * 440 * t)));
+    worst = std::max(worst, std::abs(r.audio.samples[n] - std::exp(-3.0 * t) * std::sin(2 * std::numbers::pi * 440 * t)));
   }
   EXPECT_LT(worst, 1e-5);
 }
@@ -74,7 +75,7 @@ material: sterling2019/steel
   ASSERT_GT(p.model.modes.size(), 3u);
   for (const Mode& m : p.model.modes) EXPECT_LT(m.freq_hz, 22050.0);
   // f1 = 4.73^2/L^2 sqrt(E/rho h^2/12) / 2 pi with E/rho = 2.55e7 (damping shifts it negligibly).
-  const double f1 = std::pow(4.73004074, 2) / 0.09 * std::sqrt(2.55e7 * 1e-4 / 12) / (2 * M_PI);
+  const double f1 = std::pow(4.73004074, 2) / 0.09 * std::sqrt(2.55e7 * 1e-4 / 12) / (2 * std::numbers::pi);
   EXPECT_NEAR(p.model.modes[0].freq_hz / f1, 1.0, 1e-6);
   // Struck in the middle, antisymmetric modes (2nd, 4th, ...) vanish.
   const ParamSet middle = parse(text + "hit: middle\n");
@@ -89,11 +90,11 @@ object: {type: plate, radius_m: 0.1, thickness_m: 0.003}
 damping: {law: rayleigh, alpha1: 1.0, alpha2: 0.0}
 )";
   const ParamSet tuned = parse(base + "fundamental_hz: 500\n");
-  EXPECT_NEAR(std::hypot(2 * M_PI * tuned.model.modes[0].freq_hz, 0.5) / (2 * M_PI), 500.0, 1e-6);
+  EXPECT_NEAR(std::hypot(2 * std::numbers::pi * tuned.model.modes[0].freq_hz, 0.5) / (2 * std::numbers::pi), 500.0, 1e-6);
   const ParamSet a = parse(base + "specific_modulus_m2_s2: 2.5e7\n");
   const ParamSet b = parse(base + "specific_modulus_m2_s2: 2.5e7\nsize_scale: 2\n");
-  const double fa = std::hypot(2 * M_PI * a.model.modes[0].freq_hz, 0.5);
-  const double fb = std::hypot(2 * M_PI * b.model.modes[0].freq_hz, 0.5);
+  const double fa = std::hypot(2 * std::numbers::pi * a.model.modes[0].freq_hz, 0.5);
+  const double fb = std::hypot(2 * std::numbers::pi * b.model.modes[0].freq_hz, 0.5);
   EXPECT_NEAR(fa / fb, 2.0, 1e-9);  // f ~ 1/s
 }
 
@@ -117,7 +118,7 @@ specific_modulus_m2_s2: 1.0e6
   const ParamSet h = parse("duration_s: 1\nobject: {type: eigenvalues, lambda0: [1.0]}\n"
                            "material: sterling2019/glass\ndamping_law: hybrid\nfundamental_hz: 1000\n");
   EXPECT_NEAR(h.model.modes[0].decay_per_s,
-              0.5 * (1.9 + 1.5e-7 * std::pow(2 * M_PI * 1000.0, 2 * 0.974)), 1e-9);
+              0.5 * (1.9 + 1.5e-7 * std::pow(2 * std::numbers::pi * 1000.0, 2 * 0.974)), 1e-9);
 }
 
 TEST(ParamSet, OverridesAndStableHash) {

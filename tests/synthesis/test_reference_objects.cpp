@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "synthesis/reference_objects.hpp"
 
@@ -11,7 +12,7 @@ TEST(FreeFreeBar, RootsOfCosCoshEqualsOne) {
   // Blevins, Formulas for natural frequency and mode shape, Table 8-1 (free-free beam).
   const double published[] = {4.73004074, 7.85320462, 10.9956078, 14.1371655, 17.2787597};
   for (int n = 1; n <= 5; ++n) EXPECT_NEAR(free_bar_root(n), published[n - 1], 1e-7) << n;
-  EXPECT_NEAR(free_bar_root(20), (20 + 0.5) * M_PI, 1e-9);
+  EXPECT_NEAR(free_bar_root(20), (20 + 0.5) * std::numbers::pi, 1e-9);
 }
 
 TEST(FreeFreeBar, FrequencyRatiosAndScaling) {

@@ -7,6 +7,7 @@
 #include <complex>
 #include <cstdlib>
 #include <new>
+#include <numbers>
 #include <random>
 
 #include "support/test_util.hpp"
@@ -35,7 +36,7 @@ ModalModel random_model(std::uint64_t seed, std::size_t modes, double max_decay)
   std::uniform_real_distribution<double> logf(std::log(40.0), std::log(20000.0)), u(0.0, 1.0);
   ModalModel m;
   for (std::size_t i = 0; i < modes; ++i)
-    m.modes.push_back(Mode{std::exp(logf(rng)), 0.05 + max_decay * u(rng), 0.05 + u(rng), 2 * M_PI * u(rng)});
+    m.modes.push_back(Mode{std::exp(logf(rng)), 0.05 + max_decay * u(rng), 0.05 + u(rng), 2 * std::numbers::pi * u(rng)});
   return m;
 }
 
@@ -49,7 +50,7 @@ TEST(Renderer, MinimalSetIsExactlyTheFormula) {
   double worst = 0.0;
   for (std::size_t n = 0; n < y.size(); ++n) {
     const double t = double(n) / 44100.0;
-    worst = std::max(worst, std::abs(y[n] - std::exp(-3.0 * t) * std::sin(2 * M_PI * 440.0 * t)));
+    worst = std::max(worst, std::abs(y[n] - std::exp(-3.0 * t) * std::sin(2 * std::numbers::pi * 440.0 * t)));
   }
   EXPECT_LT(worst, 1e-5);  // float rounding only (-100 dB): never drifts, thanks to re-anchoring
   EXPECT_EQ(y[0], 0.0f);
@@ -99,7 +100,7 @@ TEST(Excitation, RaisedCosineLowPassMatchesFourierTransform) {
   e.shape = PulseShape::raised_cosine;
   e.contact_s = 0.001;
   for (double f : {50.0, 300.0, 700.0, 1500.0, 4321.0, 9000.0}) {
-    const double x = 2 * M_PI * f * e.contact_s / 2;
+    const double x = 2 * std::numbers::pi * f * e.contact_s / 2;
     const double expected = std::abs(std::sin(x) / x / (1 - std::pow(f * e.contact_s, 2)));
     EXPECT_NEAR(std::abs(contact_factor(e, 0.0, f)), expected, 1e-9) << f;
   }
@@ -152,7 +153,7 @@ TEST(Renderer, RenderDoesNotAllocate) {
 
 TEST(OutputLevel, PeakAndAttackRms) {
   std::vector<float> y(44100, 0.0f);
-  for (std::size_t n = 0; n < y.size(); ++n) y[n] = float(0.1 * std::sin(2 * M_PI * 1000.0 * n / 44100.0));
+  for (std::size_t n = 0; n < y.size(); ++n) y[n] = float(0.1 * std::sin(2 * std::numbers::pi * 1000.0 * n / 44100.0));
   OutputLevel peak{LevelMode::peak, -6.0, 0.005};
   EXPECT_NEAR(level_gain(y, 44100.0, peak) * 0.1, std::pow(10.0, -6.0 / 20), 1e-4);
   OutputLevel attack{LevelMode::attack_rms, -20.0, 0.005};
