@@ -71,6 +71,7 @@ void mushra_boxplot(const std::string& path, const std::vector<std::string>& con
   boxes->setBrush(QColor(198, 219, 239));
   boxes->setPen(QPen(QColor(40, 70, 110), 1.4));
   std::vector<BoxStats> stats(n);
+  bool any_box = false;  // without ratings (e.g. proportions with intervals) the marks sit centred
   QStringList categories;
   for (std::size_t i = 0; i < n; ++i) {
     categories << qs(conditions[i]);
@@ -84,6 +85,7 @@ void mushra_boxplot(const std::string& path, const std::vector<std::string>& con
       continue;
     }
     stats[i] = box_stats(finite);
+    any_box = true;
     const BoxStats& b = stats[i];
     boxes->append(new QBoxSet(b.whisker_lo, b.q1, b.median, b.q3, b.whisker_hi, qs(conditions[i])));
   }
@@ -126,7 +128,7 @@ void mushra_boxplot(const std::string& path, const std::vector<std::string>& con
     const QColor mean_color(200, 30, 30);
     p.setClipRect(plot.adjusted(-8, -8, 8, 8));
     for (std::size_t i = 0; i < n; ++i) {
-      const double x_off = 0.32;  // mean + CI to the right of the box (box half-width is 0.21)
+      const double x_off = any_box ? 0.32 : 0.0;  // mean + CI right of the box (its half-width is 0.21)
       // Outliers: open circles on the box's axis.
       p.setPen(QPen(QColor(40, 70, 110), 1.2));
       p.setBrush(Qt::NoBrush);
@@ -154,8 +156,9 @@ void mushra_boxplot(const std::string& path, const std::vector<std::string>& con
     p.setFont(f);
     p.setPen(QColor(60, 60, 60));
     p.drawText(QRectF(0, options.height_px - 24, options.width_px, 20), Qt::AlignCenter,
-               QString::fromUtf8("Box: median and quartiles; whiskers: furthest rating within 1.5 IQR; "
-                                 "○ outlier; ◆ mean with 95 % confidence interval"));
+               any_box ? QString::fromUtf8("Box: median and quartiles; whiskers: furthest rating within 1.5 IQR; "
+                                           "○ outlier; ◆ mean with 95 % confidence interval")
+                       : QString::fromUtf8("◆ estimate with its 95 % confidence interval"));
   });
 }
 

@@ -67,4 +67,9 @@ TEST(ReadmePictures, EveryViewOnTheGivenScreen) {
   experimenter.show();
   ASSERT_TRUE(QTest::qWaitForWindowExposed(&experimenter));
   shoot(experimenter, dir, "experimenter");
+  auto* tabs = experimenter.findChild<QTabWidget*>();
+  ASSERT_NE(tabs, nullptr);
+  tabs->setCurrentIndex(1);  // the analysis pictures
+  QTest::qWait(50);
+  shoot(experimenter, dir, "experimenter-pictures");
 }
