@@ -1,8 +1,11 @@
-// A small protocol on disk for the session, cache and autopilot tests: two one-mode parameter sets,
-// a derived anchor and one block of each answered kind.
+// Fixtures of the core tests: a small protocol on disk (two one-mode parameter sets, a derived anchor
+// and one block of each answered kind), and simulated participants run into a store and exported.
 #pragma once
+#include <cstdint>
 #include <string>
 
+#include "studyapp/core/autopilot.hpp"
+#include "studyapp/core/export.hpp"
 #include "support/test_util.hpp"
 
 namespace ms::testing {
@@ -27,6 +30,20 @@ inline std::string write_small_study(const test::TempDir& dir, const std::string
                    "  - {type: identify, id: id, stimuli: [low, high], labels: [low, high], repeats: 2}\n"
                    "  - {type: mushra, id: mu, reference: low, conditions: [lowq, lp]}\n" +
                        extra_blocks);
+}
+
+// Runs `participants` simulated participants (codes prefix0, prefix1, ...; seeds first_seed,
+// first_seed + 1, ...) with `o`'s protocol, store and cache, then exports the store into `out_dir`.
+// False when a session did not finish.
+inline bool run_participants_and_export(AutopilotOptions o, int participants, const std::string& prefix,
+                                        std::uint64_t first_seed, const std::string& out_dir) {
+  for (int p = 0; p < participants; ++p) {
+    o.participant = prefix + std::to_string(p);
+    o.seed = first_seed + std::uint64_t(p);
+    if (!run_autopilot(o).finished) return false;
+  }
+  export_results(o.db_path, out_dir);
+  return true;
 }
 
 }  // namespace ms::testing

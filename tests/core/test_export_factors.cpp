@@ -12,6 +12,7 @@
 #include "studyapp/core/export.hpp"
 #include "studyapp/core/protocol_parser.hpp"
 #include "studyapp/core/tidy_tables.hpp"
+#include "core_fixtures.hpp"
 #include "support/test_util.hpp"
 
 using namespace ms;
@@ -51,12 +52,7 @@ TEST(ExportFactors, AutopilotToConfusionAndAnova) {
   AutopilotOptions o;
   o.protocol_path = write_factorial_study(dir);
   o.db_path = dir.file("r.sqlite");
-  for (int p = 0; p < 6; ++p) {
-    o.participant = "L" + std::to_string(p);
-    o.seed = std::uint64_t(10 + p);
-    ASSERT_TRUE(run_autopilot(o).finished);
-  }
-  export_results(o.db_path, dir.file("out"));
+  ASSERT_TRUE(ms::testing::run_participants_and_export(o, 6, "L", 10, dir.file("out")));
 
   // identify.csv: the truth is the label (not the stimulus name), correct compares the answer with it.
   const TidyCsv id = TidyCsv::read(dir.file("out/identify.csv"));

@@ -9,6 +9,7 @@
 #include "studyapp/core/autopilot.hpp"
 #include "studyapp/core/export.hpp"
 #include "studyapp/core/protocol_parser.hpp"
+#include "core_fixtures.hpp"
 #include "support/test_util.hpp"
 
 using namespace ms;
@@ -19,12 +20,7 @@ TEST(ExportMagnitude, ModulusFromTheProtocolInExportAndStats) {
   o.protocol_path = std::string(MODALSTUDY_SOURCE_DIR) + "/protocols/demo.yaml";
   o.db_path = dir.file("demo.sqlite");
   o.cache_dir = dir.file("cache");
-  for (int p = 0; p < 2; ++p) {
-    o.participant = "P" + std::to_string(p);
-    o.seed = std::uint64_t(7 + p);
-    ASSERT_TRUE(run_autopilot(o).finished);
-  }
-  export_results(o.db_path, dir.file("out"));
+  ASSERT_TRUE(ms::testing::run_participants_and_export(o, 2, "P", 7, dir.file("out")));
   const TidyCsv t = TidyCsv::read(dir.file("out/magnitude.csv"));
   ASSERT_GT(t.rows(), 0u);
   for (std::size_t r = 0; r < t.rows(); ++r) {

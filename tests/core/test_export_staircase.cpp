@@ -8,6 +8,7 @@
 #include "analysis/tidy_csv.hpp"
 #include "studyapp/core/autopilot.hpp"
 #include "studyapp/core/export.hpp"
+#include "core_fixtures.hpp"
 #include "support/test_util.hpp"
 
 using namespace ms;
@@ -18,12 +19,7 @@ TEST(ExportStaircase, StatsStaircaseAgreesWithTheStoredThreshold) {
   o.protocol_path = std::string(MODALSTUDY_SOURCE_DIR) + "/protocols/demo.yaml";
   o.db_path = dir.file("demo.sqlite");
   o.cache_dir = dir.file("cache");
-  for (int p = 0; p < 3; ++p) {
-    o.participant = "P" + std::to_string(p);
-    o.seed = std::uint64_t(3 + p);
-    ASSERT_TRUE(run_autopilot(o).finished);
-  }
-  export_results(o.db_path, dir.file("out"));
+  ASSERT_TRUE(ms::testing::run_participants_and_export(o, 3, "P", 3, dir.file("out")));
   const TidyCsv t = TidyCsv::read(dir.file("out/staircase.csv"));
   std::map<std::string, double> stored;
   std::map<std::string, std::size_t> steps;
