@@ -8,6 +8,7 @@
 #include "analysis/magnitude_estimation.hpp"
 #include "analysis/mds.hpp"
 #include "analysis/tidy_csv.hpp"
+#include "studyapp/core/response_format.hpp"
 #include "studyapp/core/tidy_tables.hpp"
 
 namespace ms {
@@ -34,9 +35,9 @@ std::vector<AbProportion> ab_proportions(const std::vector<ResponseRow>& rows, c
       it = counts.end() - 1;
     }
     bool success = false;
-    if (it->measure == "correct") success = (answer == "A" ? a : b) == s[2].get<std::string>();
+    if (it->measure == "correct") success = abx_correct(s, answer);
     else if (it->measure == "different") success = answer == "different";
-    else success = (answer == "A" ? a : b) == it->first;
+    else success = ab_chosen_stimulus(s, answer) == it->first;
     it->successes += success ? 1u : 0u;
     ++it->trials;
   }

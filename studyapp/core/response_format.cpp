@@ -102,4 +102,12 @@ std::string check_answer(const Block& block, const Trial& trial, const nlohmann:
   return "block '" + block.id + "' has an unknown type";
 }
 
+std::string ab_chosen_stimulus(const nlohmann::json& stimuli, const std::string& answer) {
+  return stimuli.at(answer == "A" ? 0 : 1).get<std::string>();
+}
+
+bool abx_correct(const nlohmann::json& stimuli, const std::string& answer) {
+  return ab_chosen_stimulus(stimuli, answer) == stimuli.at(2).get<std::string>();
+}
+
 }  // namespace ms

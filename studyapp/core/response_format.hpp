@@ -24,6 +24,12 @@ namespace ms {
 // "" when `value` is a valid answer to `trial` of `block`, else why not (one line).
 std::string check_answer(const Block& block, const Trial& trial, const nlohmann::json& value);
 
+// The stimulus an A/B answer "A" or "B" chose from its trial's stored stimuli [A, B, (X)].
+std::string ab_chosen_stimulus(const nlohmann::json& stimuli, const std::string& answer);
+
+// ABX stores [A, B, X]: the answer is correct when the chosen one is X.
+bool abx_correct(const nlohmann::json& stimuli, const std::string& answer);
+
 // Question id of a questionnaire item (written id, or "q<n>" 1-based).
 std::string question_id(const Question& q, std::size_t index);
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "studyapp/core/response_format.hpp"
 #include "studyapp/core/staircase_track.hpp"
 #include "synthesis/csv.hpp"
 
@@ -123,9 +124,8 @@ std::map<std::string, std::string> tidy_tables(const std::vector<ResponseRow>& r
     const auto v = nlohmann::json::parse(r.value_json);
     const auto at = [&](std::size_t i) { return i < s.size() ? s[i].get<std::string>() : std::string(); };
     if (r.block_type == "ab") {
-      // ABX stores A, B, X: the answer is correct when the chosen one is X.
       std::string correct = "NA";
-      if (s.size() == 3 && v.is_string()) correct = ((v == "A" ? at(0) : at(1)) == at(2)) ? "1" : "0";
+      if (s.size() == 3 && v.is_string()) correct = abx_correct(s, v.get<std::string>()) ? "1" : "0";
       add({at(0), at(1), at(2), cell(v), correct}, at(0), at(1));
     } else if (r.block_type == "mushra") {
       // The hidden reference is rated under its own name (`stats mushra --reference NAME`).
