@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "analysis/audit/audit_model.hpp"
-#include "analysis/damping_features.hpp"
+#include "analysis/damping/damping_features.hpp"
 #include "synthesis/damping_law.hpp"
 #include "synthesis/paramset.hpp"
 

@@ -9,7 +9,7 @@
 
 #include "analysis/audit/baseline_fit.hpp"
 #include "analysis/audit/effect_catalog.hpp"
-#include "analysis/damping_fit.hpp"
+#include "analysis/damping/damping_fit.hpp"
 
 namespace ms::audit {
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "analysis/audit/gap_metric.hpp"
-#include "analysis/feature_extraction.hpp"
+#include "analysis/extraction/feature_extraction.hpp"
 
 namespace ms::audit {
 

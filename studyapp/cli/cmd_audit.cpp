@@ -13,7 +13,7 @@
 #include "analysis/audit/augmented_paramset.hpp"
 #include "analysis/audit/gap_location.hpp"
 #include "analysis/audit/given_model.hpp"
-#include "analysis/damping_features.hpp"
+#include "analysis/damping/damping_features.hpp"
 #include "studyapp/cli/commands.hpp"
 #include "studyapp/plots/plots.hpp"
 #include "synthesis/atomic_file.hpp"

@@ -13,9 +13,9 @@
 #include <iostream>
 
 #include "analysis/estimation/perceptual_metric.hpp"
-#include "analysis/feature_extraction.hpp"
-#include "analysis/noise_floor.hpp"
-#include "analysis/onset.hpp"
+#include "analysis/extraction/feature_extraction.hpp"
+#include "analysis/extraction/noise_floor.hpp"
+#include "analysis/extraction/onset.hpp"
 #include "studyapp/cli/commands.hpp"
 #include "studyapp/cli/stats_output.hpp"
 #include "studyapp/plots/plots.hpp"

@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <iostream>
 
-#include "analysis/feature_extraction.hpp"
+#include "analysis/extraction/feature_extraction.hpp"
 #include "studyapp/cli/commands.hpp"
 #include "studyapp/cli/stats_output.hpp"
 #include "synthesis/atomic_file.hpp"

@@ -13,9 +13,9 @@
 #include <iostream>
 
 #include "studyapp/cli/fittable_law.hpp"
-#include "analysis/damping_features.hpp"
-#include "analysis/damping_fit.hpp"
-#include "analysis/emg_likelihood.hpp"
+#include "analysis/damping/damping_features.hpp"
+#include "analysis/damping/damping_fit.hpp"
+#include "analysis/damping/emg_likelihood.hpp"
 #include "studyapp/cli/commands.hpp"
 #include "studyapp/cli/stats_output.hpp"
 #include "synthesis/atomic_file.hpp"

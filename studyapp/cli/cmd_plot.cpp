@@ -4,8 +4,8 @@
 #include <filesystem>
 #include <iostream>
 
-#include "analysis/damping_features.hpp"
-#include "analysis/damping_fit.hpp"
+#include "analysis/damping/damping_features.hpp"
+#include "analysis/damping/damping_fit.hpp"
 #include "studyapp/cli/commands.hpp"
 #include "studyapp/cli/fittable_law.hpp"
 #include "studyapp/cli/plot_pictures.hpp"

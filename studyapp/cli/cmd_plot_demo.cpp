@@ -7,9 +7,9 @@
 #include <numbers>
 #include <random>
 
-#include "analysis/damping_features.hpp"
-#include "analysis/damping_fit.hpp"
-#include "analysis/tidy_csv.hpp"
+#include "analysis/damping/damping_features.hpp"
+#include "analysis/damping/damping_fit.hpp"
+#include "synthesis/tidy_csv.hpp"
 #include "studyapp/cli/commands.hpp"
 #include "studyapp/cli/fittable_law.hpp"
 #include "studyapp/cli/plot_pictures.hpp"

@@ -5,7 +5,7 @@
 #include <vector>
 #include <iostream>
 
-#include "analysis/tidy_csv.hpp"
+#include "synthesis/tidy_csv.hpp"
 #include "studyapp/cli/plot_commands.hpp"
 #include "studyapp/plots/plots.hpp"
 #include "synthesis/input_error.hpp"

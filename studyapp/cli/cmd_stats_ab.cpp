@@ -6,7 +6,7 @@
 #include <iostream>
 #include <map>
 
-#include "analysis/ab_summary.hpp"
+#include "analysis/stats/ab_summary.hpp"
 #include "studyapp/cli/stats_commands.hpp"
 #include "studyapp/cli/stats_input.hpp"
 #include "studyapp/cli/stats_output.hpp"

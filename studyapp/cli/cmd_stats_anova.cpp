@@ -4,8 +4,8 @@
 #include <cstdio>
 #include <iostream>
 
-#include "analysis/rm_anova.hpp"
-#include "analysis/rm_data.hpp"
+#include "analysis/stats/rm_anova.hpp"
+#include "analysis/stats/rm_data.hpp"
 #include "studyapp/cli/stats_commands.hpp"
 #include "studyapp/cli/stats_input.hpp"
 #include "studyapp/cli/stats_output.hpp"

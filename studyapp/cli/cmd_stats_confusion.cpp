@@ -6,7 +6,7 @@
 #include <iostream>
 #include <set>
 
-#include "analysis/confusion.hpp"
+#include "analysis/stats/confusion.hpp"
 #include "studyapp/cli/stats_commands.hpp"
 #include "studyapp/cli/stats_input.hpp"
 #include "studyapp/cli/stats_output.hpp"

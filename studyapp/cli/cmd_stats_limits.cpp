@@ -5,8 +5,8 @@
 #include <cstdio>
 #include <iostream>
 
-#include "analysis/method_of_limits.hpp"
-#include "analysis/quantile.hpp"
+#include "analysis/stats/method_of_limits.hpp"
+#include "analysis/stats/quantile.hpp"
 #include "studyapp/cli/stats_commands.hpp"
 #include "studyapp/cli/stats_input.hpp"
 #include "studyapp/cli/stats_output.hpp"

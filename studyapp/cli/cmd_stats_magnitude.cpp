@@ -7,8 +7,8 @@
 #include <iostream>
 #include <optional>
 
-#include "analysis/magnitude_estimation.hpp"
-#include "analysis/mds.hpp"
+#include "analysis/stats/magnitude_estimation.hpp"
+#include "analysis/stats/mds.hpp"
 #include "studyapp/cli/stats_commands.hpp"
 #include "studyapp/cli/stats_input.hpp"
 #include "studyapp/cli/stats_output.hpp"

@@ -6,9 +6,9 @@
 #include <cstdio>
 #include <iostream>
 
-#include "analysis/dissimilarity_matrix.hpp"
-#include "analysis/mds.hpp"
-#include "analysis/mds_cityblock.hpp"
+#include "analysis/stats/dissimilarity_matrix.hpp"
+#include "analysis/stats/mds.hpp"
+#include "analysis/stats/mds_cityblock.hpp"
 #include "studyapp/cli/stats_commands.hpp"
 #include "studyapp/cli/stats_input.hpp"
 #include "studyapp/cli/stats_output.hpp"

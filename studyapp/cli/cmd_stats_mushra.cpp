@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <iostream>
 
-#include "analysis/mushra.hpp"
+#include "analysis/stats/mushra.hpp"
 #include "studyapp/cli/stats_commands.hpp"
 #include "studyapp/cli/stats_input.hpp"
 #include "studyapp/cli/stats_output.hpp"

@@ -4,8 +4,8 @@
 #include <cstdio>
 #include <iostream>
 
-#include "analysis/mushra.hpp"
-#include "analysis/staircase.hpp"
+#include "analysis/stats/mushra.hpp"
+#include "analysis/stats/staircase.hpp"
 #include "studyapp/cli/stats_commands.hpp"
 #include "studyapp/cli/stats_input.hpp"
 #include "studyapp/cli/stats_output.hpp"

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <iostream>
 
-#include "analysis/t_test.hpp"
+#include "analysis/stats/t_test.hpp"
 #include "studyapp/cli/stats_commands.hpp"
 #include "studyapp/cli/stats_input.hpp"
 #include "studyapp/cli/stats_output.hpp"

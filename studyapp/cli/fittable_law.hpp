@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "analysis/emg_likelihood.hpp"
+#include "analysis/damping/emg_likelihood.hpp"
 #include "synthesis/damping_law.hpp"
 #include "synthesis/input_error.hpp"
 

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "analysis/damping_fit.hpp"
-#include "analysis/emg_likelihood.hpp"
+#include "analysis/damping/damping_fit.hpp"
+#include "analysis/damping/emg_likelihood.hpp"
 #include "studyapp/cli/stats_output.hpp"
 
 namespace ms::cli {

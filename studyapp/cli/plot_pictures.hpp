@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/damping_features.hpp"
+#include "analysis/damping/damping_features.hpp"
 #include "synthesis/damping_law.hpp"
 #include "synthesis/masking_pruning.hpp"
 #include "synthesis/modal_model.hpp"

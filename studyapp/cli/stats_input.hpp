@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/tidy_csv.hpp"
+#include "synthesis/tidy_csv.hpp"
 #include "synthesis/input_error.hpp"
 
 namespace ms::cli {

@@ -5,9 +5,9 @@
 
 #include <algorithm>
 
-#include "analysis/magnitude_estimation.hpp"
-#include "analysis/mds.hpp"
-#include "analysis/tidy_csv.hpp"
+#include "analysis/stats/magnitude_estimation.hpp"
+#include "analysis/stats/mds.hpp"
+#include "synthesis/tidy_csv.hpp"
 #include "studyapp/core/response_format.hpp"
 #include "studyapp/core/tidy_tables.hpp"
 

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/binomial_test.hpp"
+#include "analysis/stats/binomial_test.hpp"
 #include "studyapp/core/protocol.hpp"
 #include "studyapp/core/results_store.hpp"
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/mushra.hpp"
+#include "analysis/stats/mushra.hpp"
 
 namespace ms {
 

@@ -1,7 +1,7 @@
 // StaircaseTrack: the transformed up-down rule; see staircase_track.hpp.
 #include "studyapp/core/staircase_track.hpp"
 
-#include "analysis/staircase.hpp"
+#include "analysis/stats/staircase.hpp"
 
 namespace ms {
 

@@ -9,8 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "analysis/confusion.hpp"
-#include "analysis/mushra.hpp"
+#include "analysis/stats/confusion.hpp"
+#include "analysis/stats/mushra.hpp"
 #include "studyapp/core/block_summaries.hpp"
 #include "studyapp/core/mushra_boxes.hpp"
 #include "studyapp/plots/plots.hpp"

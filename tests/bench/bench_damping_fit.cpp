@@ -7,8 +7,8 @@
 #include <numbers>
 #include <random>
 
-#include "analysis/damping_fit.hpp"
-#include "analysis/emg_likelihood.hpp"
+#include "analysis/damping/damping_fit.hpp"
+#include "analysis/damping/emg_likelihood.hpp"
 #include "synthesis/material.hpp"
 
 namespace {

@@ -8,13 +8,13 @@
 #include <complex>
 #include <vector>
 
-#include "../analysis/extraction_fixtures.hpp"
+#include "../analysis/extraction/extraction_fixtures.hpp"
 #include <Eigen/Dense>
 #include <numbers>
 
-#include "analysis/esprit.hpp"
-#include "analysis/feature_extraction.hpp"
-#include "analysis/mode_precision.hpp"
+#include "analysis/extraction/esprit.hpp"
+#include "analysis/extraction/feature_extraction.hpp"
+#include "analysis/extraction/mode_precision.hpp"
 #include "synthesis/effects.hpp"
 
 namespace {

@@ -8,9 +8,9 @@
 #include <cstdlib>
 #include <string>
 
-#include "analysis/dissimilarity_matrix.hpp"
-#include "analysis/mds.hpp"
-#include "analysis/tidy_csv.hpp"
+#include "analysis/stats/dissimilarity_matrix.hpp"
+#include "analysis/stats/mds.hpp"
+#include "synthesis/tidy_csv.hpp"
 
 namespace {
 

@@ -7,9 +7,9 @@
 #include <string>
 
 #include "../support/naive_anova.hpp"
-#include "analysis/rm_anova.hpp"
-#include "analysis/rm_data.hpp"
-#include "analysis/tidy_csv.hpp"
+#include "analysis/stats/rm_anova.hpp"
+#include "analysis/stats/rm_data.hpp"
+#include "synthesis/tidy_csv.hpp"
 
 namespace {
 

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <iterator>
 
-#include "analysis/tidy_csv.hpp"
+#include "synthesis/tidy_csv.hpp"
 #include "support/test_util.hpp"
 
 using namespace ms;

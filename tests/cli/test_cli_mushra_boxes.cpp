@@ -7,7 +7,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "analysis/mushra.hpp"
+#include "analysis/stats/mushra.hpp"
 #include "studyapp/core/mushra_boxes.hpp"
 #include "support/test_util.hpp"
 

@@ -9,7 +9,7 @@
 #include <fstream>
 #include <map>
 
-#include "analysis/tidy_csv.hpp"
+#include "synthesis/tidy_csv.hpp"
 #include "support/test_util.hpp"
 
 using namespace ms;

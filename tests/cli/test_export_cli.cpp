@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "analysis/tidy_csv.hpp"
+#include "synthesis/tidy_csv.hpp"
 #include "studyapp/core/export.hpp"
 #include "synthesis/csv.hpp"
 #include "studyapp/core/results_store.hpp"

@@ -10,8 +10,8 @@
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
 
-#include "analysis/damping_features.hpp"
-#include "analysis/damping_fit.hpp"
+#include "analysis/damping/damping_features.hpp"
+#include "analysis/damping/damping_fit.hpp"
 
 namespace {
 

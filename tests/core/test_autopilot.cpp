@@ -15,7 +15,7 @@
 #include "studyapp/core/autopilot.hpp"
 #include "studyapp/core/export.hpp"
 #include "studyapp/core/results_store.hpp"
-#include "analysis/tidy_csv.hpp"
+#include "synthesis/tidy_csv.hpp"
 #include "synthesis/input_error.hpp"
 
 namespace ms {

@@ -7,7 +7,7 @@
 #include <map>
 #include <set>
 
-#include "analysis/tidy_csv.hpp"
+#include "synthesis/tidy_csv.hpp"
 #include "studyapp/core/autopilot.hpp"
 #include "studyapp/core/export.hpp"
 #include "studyapp/core/protocol_parser.hpp"

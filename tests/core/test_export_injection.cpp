@@ -6,7 +6,7 @@
 #include <fstream>
 #include <iterator>
 
-#include "analysis/tidy_csv.hpp"
+#include "synthesis/tidy_csv.hpp"
 #include "studyapp/core/export.hpp"
 #include "studyapp/core/results_store.hpp"
 #include "support/test_util.hpp"

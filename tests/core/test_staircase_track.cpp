@@ -2,7 +2,7 @@
 // threshold equals analysis/staircase's mean of reversal levels (after the first two).
 #include <gtest/gtest.h>
 
-#include "analysis/staircase.hpp"
+#include "analysis/stats/staircase.hpp"
 #include "studyapp/core/staircase_track.hpp"
 
 namespace ms {

@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-#include "analysis/tidy_csv.hpp"
+#include "synthesis/tidy_csv.hpp"
 #include "studyapp/core/protocol_parser.hpp"
 #include "studyapp/core/protocol_validator.hpp"
 #include "synthesis/audio_file.hpp"

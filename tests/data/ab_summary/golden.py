@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Golden values of ab_summary (tests/analysis/test_ab_summary.cpp), Python standard library only:
+"""Golden values of ab_summary (tests/analysis/stats/test_ab_summary.cpp), Python standard library only:
 statistics.NormalDist().inv_cdf is z, math.comb gives the exact binomial tail.
 Writes golden.json; the trials are the ones test_ab_summary.cpp builds."""
 import json, math

@@ -1,4 +1,4 @@
-# Golden values for tests/analysis/test_rm_anova.cpp: seeded random repeated-measures datasets and
+# Golden values for tests/analysis/stats/test_rm_anova.cpp: seeded random repeated-measures datasets and
 # afex::aov_ez's ANOVA tables (uncorrected, GG, HF; ges and pes) plus car's sphericity diagnostics.
 # Run from this folder:  Rscript make_golden.R   (Debian: apt-get install r-cran-afex)
 suppressPackageStartupMessages(library(afex))

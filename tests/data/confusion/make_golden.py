@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Golden values for the confusion-matrix statistics (tests/analysis/test_confusion.cpp, tests/cli).
+"""Golden values for the confusion-matrix statistics (tests/analysis/stats/test_confusion.cpp, tests/cli).
 
 1. Transcribes Tables III and IV of US 9,401,684 (Ren, Yeh, Lin; the 2013 material-identification
    study): recognition-rate matrices in percent for recorded and synthesised sounds, and computes

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Golden values for the EMG damping fit (tests/analysis/test_damping_golden.cpp).
+"""Golden values for the EMG damping fit (tests/analysis/damping/test_damping_golden.cpp).
 
 Writes features.csv and features_powerlaw.csv (12 synthetic strikes x 25 modes each: law + per-strike
 exponential support excess + normal noise) and golden.json: for each law (rayleigh, hybrid on

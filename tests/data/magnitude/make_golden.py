@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-# Golden values for analysis/magnitude_estimation (tests/analysis/test_magnitude_estimation.cpp,
+# Golden values for analysis/magnitude_estimation (tests/analysis/stats/test_magnitude_estimation.cpp,
 # tests/cli/test_cli_stats.cpp): a seeded magnitude-estimation study shaped like Experiment 3 of
 # van den Doel et al. (2002): 8 listeners x all 78 pairs (identical pairs included) of 12 tokens
 # (the recording "real" and 11 syntheses "m1" .. "m11"), rated against the modulus pair (real, m1).

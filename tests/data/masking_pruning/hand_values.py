@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Expected numbers of tests/analysis/test_masking_pruning.cpp and tests/cli/test_prune_cli.cpp.
+"""Expected numbers of tests/synthesis/test_masking_pruning.cpp and tests/cli/test_prune_cli.cpp.
 
 An independent, literal O(N^2) transcription of the rule in synthesis/masking_pruning.hpp (van den Doel,
 Pai et al. 2002) using only Python's math module. Run: python3 hand_values.py

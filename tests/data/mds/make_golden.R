@@ -1,4 +1,4 @@
-# Golden values for tests/analysis/test_mds.cpp: a seeded dissimilarity matrix (10 sounds), R's
+# Golden values for tests/analysis/stats/test_mds.cpp: a seeded dissimilarity matrix (10 sounds), R's
 # stats::cmdscale (classical MDS) and metric SMACOF written out in base R (Guttman transform from
 # the cmdscale start, unit weights; de Leeuw 1977) as an independent implementation.
 # Run from this folder: Rscript make_golden.R

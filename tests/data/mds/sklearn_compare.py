@@ -1,11 +1,11 @@
 #!/usr/bin/python3
-# Golden values for the MDS comparison with scikit-learn (tests/analysis/test_mds.cpp,
+# Golden values for the MDS comparison with scikit-learn (tests/analysis/stats/test_mds.cpp,
 # MdsVsSklearn.*; tests/bench/mds_vs_sklearn.sh): a seeded 100 x 100 dissimilarity matrix and the
 # Kruskal stress-1 of scikit-learn's metric SMACOF (best of its n_init starts) on it.
 #
 # Matrix: 100 points in 3-D (normal, axis scales 3, 2, 0.8: a noisy "2-D map" with a thin third
 # dimension), Euclidean distances plus symmetric |N(0, 0.3^2)| noise, zero diagonal.
-# Stress-1 uses the formula of analysis/mds.hpp (ratio-scaled disparities b*delta, b = sum delta d /
+# Stress-1 uses the formula of analysis/stats/mds.hpp (ratio-scaled disparities b*delta, b = sum delta d /
 # sum delta^2): S1 = sqrt(sum_{i<j} (d_ij - b delta_ij)^2 / sum_{i<j} d_ij^2).
 #
 # Run from this folder with Debian's Python (numpy, scipy, scikit-learn):

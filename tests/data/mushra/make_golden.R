@@ -1,4 +1,4 @@
-# Golden values for the MUSHRA summary (tests/analysis/test_mushra.cpp, tests/cli/test_cli_stats.cpp).
+# Golden values for the MUSHRA summary (tests/analysis/stats/test_mushra.cpp, tests/cli/test_cli_stats.cpp).
 # A seeded MUSHRA result set (12 assessors x 8 items x 6 conditions) with planted screening cases,
 # then BS.1534-3 post-screening and t-based 95 % intervals computed with base R (t.test).
 # Run from this folder: Rscript make_golden.R

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-# Golden values for tests/analysis/test_perceptual_metric.cpp (Debian python3-scipy 1.10):
+# Golden values for tests/analysis/estimation/test_perceptual_metric.cpp (Debian python3-scipy 1.10):
 # the Bark-band power image of a fixed three-mode test signal from scipy.signal.spectrogram, and its
 # loudness in sone through the ISO 226:2003 formulas. Run: /usr/bin/python3 make_golden.py
 import csv

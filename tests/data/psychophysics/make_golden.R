@@ -1,4 +1,4 @@
-# Golden values for tests/analysis/test_psychophysics.cpp: R's binom.test (exact p and
+# Golden values for tests/analysis/stats/test_psychophysics.cpp: R's binom.test (exact p and
 # Clopper-Pearson interval), and the Macmillan & Creelman d' formulas evaluated with R's
 # pnorm/qnorm and inverted with uniroot (an independent numerical inversion).
 # Run from this folder: Rscript make_golden.R

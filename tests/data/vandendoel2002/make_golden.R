@@ -1,4 +1,4 @@
-# Golden values for tests/analysis/test_vandendoel2002.cpp: the published tables of van den Doel
+# Golden values for tests/analysis/stats/test_vandendoel2002.cpp: the published tables of van den Doel
 # et al. (2002) summarised by R. Table 1: medians of a_v per object and pooled (the paper used
 # 16 dB). Table 2: column medians; naive vs energy per object by the paired Wilcoxon signed-rank
 # test (exact = NULL as R's default: ties/zeros force the normal approximation with continuity

@@ -1,4 +1,4 @@
-# Golden values for analysis/wilcoxon (tests/analysis/test_wilcoxon.cpp): R's wilcox.test(x, y,
+# Golden values for analysis/wilcoxon (tests/analysis/stats/test_wilcoxon.cpp): R's wilcox.test(x, y,
 # paired = TRUE, ...) on seeded samples covering the exact distribution (two-sided, greater, less),
 # the normal approximation (n >= 50, exact = FALSE, ties, zeros, with and without continuity
 # correction), and binom.test for the sign test. Run from this folder: Rscript make_golden.R

@@ -1,0 +1,125 @@
+// Short-time low-quantile noise envelope (FFTW); see noise_envelope.hpp.
+#include "analysis/extraction/noise_envelope.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "synthesis/fft.hpp"
+
+namespace ms {
+
+namespace {
+
+constexpr double kQuantile = 0.2;
+// A block counts as louder than the floor only above this ratio: the 20th-percentile estimate over
+// a few hundred bins scatters by ~10 %, its running maximum over a 2 s recording by ~30 %, and a dense
+// impact's own modes can lift a first frame's quantile by ~3 dB.
+constexpr double kMinRatio = 4.0;
+constexpr double kLowestHz = 100.0, kHighestShare = 0.45;  // bins used (of fs)
+
+}  // namespace
+
+double component_energy(const DampedComponent& c, std::size_t from, std::size_t to) {
+  if (to <= from) return 0.0;
+  const std::complex<double> b = c.b * std::exp(c.s * double(from));
+  const std::size_t n = to - from;
+  const std::complex<double> t_abs = weighted_geometric_sum(0, {2.0 * c.s.real(), 0.0}, n);
+  const std::complex<double> t_osc = weighted_geometric_sum(0, 2.0 * c.s, n);
+  return 0.5 * (std::norm(b) * t_abs.real() + (b * b * t_osc).real());
+}
+
+double NoiseEnvelope::weighted_fit_gain(const std::vector<double>& residual, const DampedComponent& c) const {
+  // Normal equations of min sum w (y - (p Re u - q Im u))^2, u = e^{s n}, y = residual + Re(b u).
+  double a11 = 0.0, a12 = 0.0, a22 = 0.0, r1 = 0.0, r2 = 0.0;
+  constexpr std::size_t kAnchor = 1024;  // fresh powers now and then: the recurrence drifts
+  const double decay = -c.s.real();
+  // Beyond |u|^2 < 1e-12 the basis adds nothing to the sums.
+  const std::size_t span = decay > 0.0 ? std::min(residual.size(), std::size_t(std::ceil(13.8 / decay)) + 1) : residual.size();
+  const std::complex<double> step = std::exp(c.s);
+  for (std::size_t start = 0; start < span; start += kAnchor) {
+    std::complex<double> u = std::exp(c.s * double(start));
+    const std::size_t end = std::min(span, start + kAnchor);
+    for (std::size_t n = start; n < end; ++n, u *= step) {
+      const double w = 1.0 / at(n);
+      const double y = residual[n] + (c.b * u).real();
+      a11 += w * u.real() * u.real();
+      a12 -= w * u.real() * u.imag();
+      a22 += w * u.imag() * u.imag();
+      r1 += w * y * u.real();
+      r2 -= w * y * u.imag();
+    }
+  }
+  const double det = a11 * a22 - a12 * a12;
+  if (!(det > 0.0)) return 0.0;
+  // r^T A^-1 r: the weighted energy of the fitted component.
+  return (a22 * r1 * r1 - 2.0 * a12 * r1 * r2 + a11 * r2 * r2) / det;
+}
+
+double NoiseEnvelope::variance_seen(double decay_per_sample, std::size_t frames, int power) const {
+  if (flat() || block == 0 || frames == 0) return floor_variance;
+  const std::complex<double> sigma(-2.0 * std::max(decay_per_sample, 0.0), 0.0);
+  // Weight of block [a, a + B): sum_m (a + m)^p q^{a + m} = q^a (T0 a^p + 2 T1 a [p = 2] + T2 [p = 2])
+  // with T_j = sum_{m < B} m^j q^m, the same for every block.
+  const double T0 = weighted_geometric_sum(0, sigma, block).real();
+  const double T1 = weighted_geometric_sum(1, sigma, block).real();
+  const double T2 = weighted_geometric_sum(2, sigma, block).real();
+  const double step = std::exp(sigma.real() * double(block));
+  double qa = 1.0, total = 0.0, weighted = 0.0;
+  std::size_t k = 0;
+  for (; k < variance.size() && (k + 1) * block <= frames; ++k, qa *= step) {
+    const double a = double(k * block);
+    const double w = power == 2 ? qa * (T0 * a * a + 2.0 * T1 * a + T2) : qa * T0;
+    total += w;
+    weighted += w * std::max(variance[k], floor_variance);
+  }
+  // The rest of the record (the floor, and a partial block if the record ends inside the envelope).
+  const std::size_t a = k * block;
+  const double whole = weighted_geometric_sum(power, sigma, frames).real();
+  const double rest = std::max(0.0, whole - total);
+  total = whole;
+  weighted += rest * (k < variance.size() && a < frames ? std::max(variance[k], floor_variance) : floor_variance);
+  return total > 0.0 ? weighted / total : floor_variance;
+}
+
+NoiseEnvelope estimate_noise_envelope(const std::vector<double>& x, double fs, double floor_variance) {
+  NoiseEnvelope env;
+  env.floor_variance = floor_variance;
+  std::size_t window = 256;
+  while (double(window) < 0.023 * fs) window *= 2;
+  const std::size_t hop = window / 2;
+  env.block = window / 16;
+  if (x.size() < 2 * window || !(floor_variance > 0.0)) return env;
+  const std::size_t frames = 1 + (x.size() - window) / hop;
+  const std::size_t k_lo = std::max<std::size_t>(1, std::size_t(std::ceil(kLowestHz * double(window) / fs)));
+  const std::size_t k_hi = std::min(window / 2 - 1, std::size_t(kHighestShare * double(window)));
+  if (k_hi <= k_lo + 16) return env;
+  RealFft fft(window);
+  double* in = fft.real();
+  const std::complex<double>* out = fft.spectrum();
+  std::vector<double> w(window), power(k_hi - k_lo + 1);
+  double window_energy = 0.0;
+  for (std::size_t i = 0; i < window; ++i) {
+    w[i] = 0.5 - 0.5 * std::cos(2.0 * std::numbers::pi * double(i) / double(window));
+    window_energy += w[i] * w[i];
+  }
+  const double scale = 1.0 / (-std::log1p(-kQuantile) * window_energy);
+  std::vector<double> estimate(frames);
+  for (std::size_t f = 0; f < frames; ++f) {
+    for (std::size_t i = 0; i < window; ++i) in[i] = w[i] * x[f * hop + i];
+    fft.forward();
+    for (std::size_t k = k_lo; k <= k_hi; ++k) power[k - k_lo] = out[k].real() * out[k].real() + out[k].imag() * out[k].imag();
+    const auto q = power.begin() + std::ptrdiff_t(double(power.size()) * kQuantile);
+    std::nth_element(power.begin(), q, power.end());
+    estimate[f] = *q * scale;
+  }
+  // Non-increasing from the right: a frame is at least as noisy as any later one.
+  for (std::size_t f = frames - 1; f-- > 0;) estimate[f] = std::max(estimate[f], estimate[f + 1]);
+  std::size_t loud = 0;
+  while (loud < frames && estimate[loud] > kMinRatio * floor_variance) ++loud;
+  // Frame f starts at f * hop: its estimate holds for the hop's blocks.
+  for (std::size_t f = 0; f < loud; ++f) env.variance.insert(env.variance.end(), hop / env.block, estimate[f]);
+  return env;
+}
+
+}  // namespace ms
