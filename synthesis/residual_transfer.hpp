@@ -1,0 +1,47 @@
+// The residual of one recorded object heard on another (patent US 9,401,684 Sec. 6.2, Algorithm 1):
+// the i-th source mode and the i-th target mode, both in ascending frequency, form a pair (modes move
+// with the geometry and keep their order for objects of one kind). Per pair the source residual is
+//   (1) shifted in frequency by f_t - f_s,
+//   (2) stretched in time by the decay ratio d_s / d_t (target time t reads source time t d_t / d_s),
+//   (3) scaled pixel by pixel by A = P_t / P_s'', the target mode's power over the source mode's after
+//       the same shift and stretch (both in closed form, residual_stft.hpp: the shifted source mode is
+//       the same sinusoid at f_t, so no window scalloping enters A), so that the residual keeps its
+//       relation to the mode it sat beside,
+// and the result is kept in the target mode's neighbourhood, between the midpoints to its paired
+// neighbours (the lowest reaching 0 Hz, the highest Nyquist); the neighbourhoods stitched are the
+// target's residual, turned into samples by Griffin-Lim (griffin_lim.hpp).
+// The residual is interpolated bilinearly in power between frames and bins; on the source object itself every
+// shift is 0 and every ratio 1, so the transfer returns the source spectrogram bit for bit.
+#pragma once
+#include <cstddef>
+#include <vector>
+
+#include "synthesis/excitation.hpp"
+#include "synthesis/griffin_lim.hpp"
+#include "synthesis/modal_model.hpp"
+#include "synthesis/residual_file.hpp"
+
+namespace ms {
+
+// The modes as the listener hears them after the strike: amp and phase of g G a e^{i phase}, with g
+// the strike gain and G the contact's factor (1 for the impulse), as the renderers apply them.
+std::vector<Mode> heard_modes(const std::vector<Mode>& modes, const Excitation& excitation);
+
+// Pixel scales are taken against a floor this far below each mode's peak in the frame (-30 dB), so
+// that A is the pixel ratio where the mode is present (its main lobe) and tends to the ratio of the
+// two modes' peaks in that frame elsewhere, instead of a ratio of window sidelobes or of 0/0.
+inline constexpr double kPixelScaleFloor = 1e-3;
+
+// The target's residual power: target_frames x source.grid.bins(), frame-major. `target`: the heard
+// modes of the object (below the source's Nyquist; others are ignored). Without a pair (no target
+// mode) the source spectrogram is returned, cut or padded with silence to target_frames.
+std::vector<float> transfer_residual_power(const ResidualSpectrogram& source, const std::vector<Mode>& target,
+                                           std::size_t target_frames);
+
+// The target's residual as `samples` samples at source.sample_rate_hz: the transferred power through
+// Griffin-Lim. Throws std::invalid_argument when sample_rate_hz differs from the residual's.
+GriffinLimResult render_transferred_residual(const ResidualSpectrogram& source, const std::vector<Mode>& target,
+                                             double sample_rate_hz, std::size_t samples,
+                                             const GriffinLimOptions& options = {});
+
+}  // namespace ms
