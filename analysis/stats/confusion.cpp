@@ -94,6 +94,14 @@ Interval newcombe_difference(double x1, double n1, double x2, double n2, double 
           d + std::sqrt((a.high - p1) * (a.high - p1) + (p2 - b.low) * (p2 - b.low))};
 }
 
+Interval wald_difference(double x1, double n1, double x2, double n2, bool continuity_correction, double conf_level) {
+  const double z = boost::math::quantile(boost::math::normal(), 0.5 + conf_level / 2);
+  const double p1 = x1 / n1, p2 = x2 / n2, d = p1 - p2, inv_n = 1 / n1 + 1 / n2;
+  const double yates = continuity_correction ? std::min(0.5, std::abs(d) / inv_n) : 0.0;
+  const double width = z * std::sqrt(p1 * (1 - p1) / n1 + p2 * (1 - p2) / n2) + yates * inv_n;
+  return {std::max(d - width, -1.0), std::min(d + width, 1.0)};
+}
+
 }  // namespace ms
 
 namespace ms {

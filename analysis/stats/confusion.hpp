@@ -65,5 +65,10 @@ struct Interval {
 Interval wilson_interval(double x, double n, double conf_level = 0.95);
 // Newcombe's hybrid score interval for x1/n1 - x2/n2.
 Interval newcombe_difference(double x1, double n1, double x2, double n2, double conf_level = 0.95);
+// The Wald interval for p1 - p2 as R's prop.test gives it: d +- (z sqrt(p1 q1/n1 + p2 q2/n2) + y (1/n1 + 1/n2)),
+// y = min(1/2, |d| / (1/n1 + 1/n2)) with the continuity correction, 0 without; clipped to [-1, 1].
+// Symmetric about d, which is how published tables of this kind (e.g. Ren et al.'s Table V) read.
+Interval wald_difference(double x1, double n1, double x2, double n2, bool continuity_correction,
+                         double conf_level = 0.95);
 
 }  // namespace ms

@@ -1,9 +1,12 @@
-// modalstudy stats anova: repeated-measures ANOVA (analysis/rm_anova.hpp) of a tidy CSV.
+// modalstudy stats anova: repeated-measures ANOVA (analysis/stats/rm_anova.hpp) of a tidy CSV, with
+// post-hoc pairwise t-tests (analysis/stats/posthoc.hpp) for the factors named by --posthoc.
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
+#include "analysis/stats/posthoc.hpp"
 #include "analysis/stats/rm_anova.hpp"
 #include "analysis/stats/rm_data.hpp"
 #include "studyapp/cli/stats_commands.hpp"
@@ -11,11 +14,33 @@
 #include "studyapp/cli/stats_output.hpp"
 
 namespace ms::cli {
+namespace {
+
+nlohmann::json posthoc_json(const Posthoc& h) {
+  nlohmann::json pairs = nlohmann::json::array();
+  for (const auto& c : h.pairs)
+    pairs.push_back({{"a", c.level_a}, {"b", c.level_b}, {"mean_diff", c.mean_diff}, {"t", num_json(c.t)},
+                     {"df", c.df}, {"p", num_json(c.p)}, {"p_adjusted", num_json(c.p_adjusted)}});
+  return {{"factor", h.factor}, {"within", h.within}, {"adjust", p_adjust_name(h.method)}, {"pairs", pairs}};
+}
+
+void print_posthoc(const Posthoc& h) {
+  std::printf("\nPairwise %s t-tests of %s (%s adjustment over %zu pairs%s)\n", h.within ? "paired" : "pooled-SD",
+              h.factor.c_str(), p_adjust_name(h.method), h.pairs.size(),
+              h.within ? "; subjects' marginal means" : "; one mean per subject");
+  std::printf("%-16s %-16s %10s %8s %5s %8s %8s\n", "a", "b", "a - b", "t", "df", "p", "p adj");
+  for (const auto& c : h.pairs)
+    std::printf("%-16s %-16s %10.4g %8.4g %5.0f %8s %8s\n", c.level_a.c_str(), c.level_b.c_str(), c.mean_diff, c.t,
+                c.df, fmt_p(c.p).c_str(), fmt_p(c.p_adjusted).c_str());
+}
+
+}  // namespace
 
 void register_stats_anova(CLI::App& group) {
   struct Options {
     std::string data, dv, subject;
-    std::vector<std::string> within, between;
+    std::vector<std::string> within, between, posthoc;
+    std::string p_adjust = "holm";
     bool json = false;
   };
   auto opt = std::make_shared<Options>();
@@ -28,13 +53,26 @@ void register_stats_anova(CLI::App& group) {
   cmd->add_option("--subject", opt->subject, "Column identifying the subject (listener)")->required();
   cmd->add_option("--within", opt->within, "Within-subject factor columns, comma separated")->required();
   cmd->add_option("--between", opt->between, "Between-subject factor column(s)");
+  cmd->add_option("--posthoc", opt->posthoc, "Pairwise t-tests between the levels of these factors, comma separated");
+  cmd->add_option("--p-adjust", opt->p_adjust, "Adjustment of the post-hoc p values over each factor's pairs")
+      ->check(CLI::IsMember({"holm", "bonferroni", "none"}));
   cmd->add_flag("--json", opt->json, "Print one JSON object");
   cmd->callback([opt, in] {
     const TidyCsv table = read_stats_table(opt->data, *in);
     std::vector<std::string> notices;
-    const RmData data = rm_data_from_table(
-        table, RmColumns{opt->dv, opt->subject, split_commas(opt->within), split_commas(opt->between)}, notices);
+    const RmColumns columns{opt->dv, opt->subject, split_commas(opt->within), split_commas(opt->between)};
+    const RmData data = rm_data_from_table(table, columns, notices);
     const RmAnova a = located(opt->data, "column '" + opt->dv + "'", [&] { return rm_anova(data); });
+    std::vector<Posthoc> posthoc;
+    for (const std::string& factor : split_commas(opt->posthoc)) {
+      const bool in_design = std::count(columns.within.begin(), columns.within.end(), factor) +
+                                 std::count(columns.between.begin(), columns.between.end(), factor) > 0;
+      if (!in_design)
+        throw InputError(SourceLocation{opt->data, 0, 0},
+                         "--posthoc '" + factor + "' is not one of the --within or --between factors");
+      posthoc.push_back(located(opt->data, "--posthoc '" + factor + "'",
+                                [&] { return pairwise_t_tests(data, factor, p_adjust_from_name(opt->p_adjust)); }));
+    }
     print_notices(notices, opt->data);
     if (opt->json) {
       nlohmann::json effects = nlohmann::json::array();
@@ -47,7 +85,11 @@ void register_stats_anova(CLI::App& group) {
                            {"pes", num_json(e.pes)}, {"mauchly_w", opt_json(e.mauchly_w)},
                            {"mauchly_p", opt_json(e.mauchly_p)}, {"ss", e.ss},
                            {"ss_error", e.ss_error}});
-      std::cout << nlohmann::json{{"effects", effects}, {"n_subjects", a.n_subjects}, {"notices", notices}}.dump()
+      nlohmann::json pairs = nlohmann::json::array();
+      for (const auto& h : posthoc) pairs.push_back(posthoc_json(h));
+      std::cout << nlohmann::json{{"effects", effects}, {"n_subjects", a.n_subjects}, {"posthoc", pairs},
+                                  {"notices", notices}}
+                       .dump()
                 << "\n";
       return;
     }
@@ -65,6 +107,7 @@ void register_stats_anova(CLI::App& group) {
       for (const auto& e : a.effects)
         if (e.mauchly_w) std::printf("%-24s %10.5f %8s\n", e.name.c_str(), *e.mauchly_w, fmt_p(*e.mauchly_p).c_str());
     }
+    for (const auto& h : posthoc) print_posthoc(h);
   });
 }
 

@@ -43,8 +43,19 @@ void print_confusion(const Confusion& c, const std::string& title) {
               cohen_kappa(c.counts), chi.df, chi.chi2, fmt("%.4g", chi.p).c_str());
 }
 
-// The recognition-rate difference per label (first - second) with its Newcombe interval.
-nlohmann::json recall_differences(const Confusion& ca, const Confusion& cb, double conf_level) {
+// The interval of a recognition-rate difference: Newcombe's hybrid score interval (the default: good
+// coverage for small counts) or the symmetric Wald interval of R's prop.test, with or without its
+// continuity correction, as many published tables give it.
+Interval difference_interval(const std::string& method, double x1, double n1, double x2, double n2,
+                             double conf_level) {
+  if (method == "wald") return wald_difference(x1, n1, x2, n2, false, conf_level);
+  if (method == "wald-cc") return wald_difference(x1, n1, x2, n2, true, conf_level);
+  return newcombe_difference(x1, n1, x2, n2, conf_level);
+}
+
+// The recognition-rate difference per label (first - second) with its interval.
+nlohmann::json recall_differences(const Confusion& ca, const Confusion& cb, const std::string& interval,
+                                  double conf_level) {
   nlohmann::json diffs = nlohmann::json::array();
   for (std::size_t i = 0; i < ca.labels.size(); ++i) {
     const Eigen::Index k = Eigen::Index(i);
@@ -53,7 +64,7 @@ nlohmann::json recall_differences(const Confusion& ca, const Confusion& cb, doub
       diffs.push_back({{"label", ca.labels[i]}, {"diff", nullptr}, {"ci_low", nullptr}, {"ci_high", nullptr}});
       continue;
     }
-    const Interval ci = newcombe_difference(ca.counts(k, k), n1, cb.counts(k, k), n2, conf_level);
+    const Interval ci = difference_interval(interval, ca.counts(k, k), n1, cb.counts(k, k), n2, conf_level);
     diffs.push_back({{"label", ca.labels[i]}, {"diff", ca.counts(k, k) / n1 - cb.counts(k, k) / n2},
                      {"ci_low", ci.low}, {"ci_high", ci.high}});
   }
@@ -77,7 +88,7 @@ void draw_heatmap(const std::string& path, const Confusion& c, const std::string
 
 void register_stats_confusion(CLI::App& group) {
   struct Options {
-    std::string data, truth, response, compare, plot;
+    std::string data, truth, response, compare, plot, interval = "newcombe";
     std::vector<std::string> labels;
     double conf_level = 0.95;
     bool json = false;
@@ -94,6 +105,9 @@ void register_stats_confusion(CLI::App& group) {
   cmd->add_option("--labels", opt->labels, "Class order, comma separated (default: sorted)");
   cmd->add_option("--conf-level", opt->conf_level, "Level of the recall-difference intervals")
       ->check(CLI::Range(0.5, 0.9999));
+  cmd->add_option("--interval", opt->interval,
+                  "Recall-difference interval: newcombe (hybrid score), wald or wald-cc (R's prop.test)")
+      ->check(CLI::IsMember({"newcombe", "wald", "wald-cc"}));
   cmd->add_option("--plot", opt->plot, "Also draw the (first) matrix as a heat map: FILE.png or FILE.svg");
   cmd->add_flag("--json", opt->json, "Print one JSON object");
   cmd->callback([opt, in] {
@@ -124,7 +138,7 @@ void register_stats_confusion(CLI::App& group) {
     }
     const Confusion cb = confusion_from_pairs(labels, b.truth, b.response);
     const double frob = frobenius_distance(row_percent(ca.counts), row_percent(cb.counts));
-    const nlohmann::json diffs = recall_differences(ca, cb, opt->conf_level);
+    const nlohmann::json diffs = recall_differences(ca, cb, opt->interval, opt->conf_level);
     if (opt->json) {
       nlohmann::json j = confusion_json(ca);
       j["compare"] = confusion_json(cb);
@@ -132,6 +146,7 @@ void register_stats_confusion(CLI::App& group) {
       j["frobenius"] = frob;
       j["recall_diff"] = diffs;
       j["conf_level"] = opt->conf_level;
+      j["interval"] = opt->interval;
       std::cout << j.dump() << "\n";
       return;
     }
@@ -139,7 +154,9 @@ void register_stats_confusion(CLI::App& group) {
     std::printf("\n");
     print_confusion(cb, opt->compare);
     std::printf("\nFrobenius norm of the difference of the row-percent matrices: %.4f\n", frob);
-    std::printf("Recognition-rate difference (first - second), %.0f%% Newcombe interval:\n", 100 * opt->conf_level);
+    const char* interval_name = opt->interval == "newcombe" ? "Newcombe" : opt->interval == "wald" ? "Wald" : "Wald (continuity-corrected)";
+    std::printf("Recognition-rate difference (first - second), %.0f%% %s interval:\n", 100 * opt->conf_level,
+                interval_name);
     for (const auto& d : diffs)
       if (!d["diff"].is_null())
         std::printf("  %-14s %+7.1f%%  [%+.1f%%, %+.1f%%]\n", d["label"].get<std::string>().c_str(),

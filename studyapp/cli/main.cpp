@@ -27,7 +27,9 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help and --version
+    std::cerr << "modalstudy: " << e.what() << "\n";  // a bad option is bad input: one line, exit 2
+    return 2;
   } catch (const ms::InputError& e) {
     std::cerr << "modalstudy: " << e.what() << "\n";
     return 2;

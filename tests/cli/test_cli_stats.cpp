@@ -9,6 +9,7 @@
 #include <fstream>
 #include <map>
 
+#include "analysis/stats/confusion.hpp"
 #include "synthesis/tidy_csv.hpp"
 #include "support/test_util.hpp"
 
@@ -110,6 +111,43 @@ TEST(CliStatsAnova, BadInputIsOneLineWithFileRowColumn) {
   for (const auto& c : cases) expect_bad(dir, c);
 }
 
+TEST(CliStatsAnova, PosthocPairsEqualRPairwiseTTest) {
+  test::TempDir dir;
+  const auto r = test::run_cli("stats anova " + kData + "posthoc/data.csv --dv score --subject subject "
+                               "--within method,material --between group --posthoc method,group "
+                               "--p-adjust bonferroni --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["posthoc"].size(), 2u);
+  const TidyCsv golden = TidyCsv::read(kData + "posthoc/golden.csv");
+  int matched = 0;
+  for (const auto& h : j["posthoc"]) {
+    EXPECT_EQ(h["adjust"], "bonferroni");
+    EXPECT_EQ(h["within"], h["factor"] == "method");
+    for (const auto& pair : h["pairs"])
+      for (std::size_t i = 0; i < golden.rows(); ++i) {
+        const std::string a = golden.cell(i, golden.column("a")), b = golden.cell(i, golden.column("b"));
+        const bool same = pair["a"] == a && pair["b"] == b, flipped = pair["a"] == b && pair["b"] == a;
+        if (golden.cell(i, golden.column("factor")) != h["factor"] ||
+            golden.cell(i, golden.column("adjust")) != "bonferroni" || !(same || flipped))
+          continue;
+        expect_rel(pair["p_adjusted"].get<double>(), golden.number(i, golden.column("p_adjusted")), a + "-" + b);
+        expect_rel((same ? 1 : -1) * pair["mean_diff"].get<double>(), golden.number(i, golden.column("mean_diff")),
+                   a + "-" + b);
+        ++matched;
+      }
+  }
+  EXPECT_EQ(matched, 6);
+  const auto text = test::run_cli("stats anova " + kData + "posthoc/data.csv --dv score --subject subject "
+                                  "--within method,material --posthoc method", dir);
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find("Pairwise paired t-tests of method (holm adjustment over 3 pairs"), std::string::npos)
+      << text.out;
+  expect_bad(dir, {"stats anova " + kData + "posthoc/data.csv --dv score --subject subject --within method "
+                   "--posthoc colour",
+                   "--posthoc 'colour' is not one of the --within or --between factors"});
+}
+
 TEST(CliStatsTTest, JsonEqualsRGolden) {
   test::TempDir dir;
   const TidyCsv golden = TidyCsv::read(kData + "anova/ttest_golden.csv");
@@ -167,6 +205,39 @@ TEST(CliStatsConfusion, CompareJsonEqualsSklearnGolden) {
     expect_rel(j["recall_diff"][i]["ci_high"].get<double>(),
                g["recorded_vs_synthesised"]["recall_diff_ci"][i][1].get<double>(), "ci_high");
   }
+}
+
+TEST(CliStatsConfusion, WaldIntervalsAreSymmetricAsPropTest) {
+  test::TempDir dir;
+  const std::string d = kData + "confusion/";
+  for (const std::string method : {"wald", "wald-cc"}) {
+    const auto r = test::run_cli("stats confusion " + d + "responses_recorded.csv --truth material --response answer "
+                                 "--labels wood,plastic,metal,porcelain,glass --compare " + d +
+                                 "responses_synthesised.csv --interval " + method + " --json", dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["interval"], method);
+    for (std::size_t i = 0; i < 5; ++i) {
+      const double x1 = j["counts"][i][i], x2 = j["compare"]["counts"][i][i];
+      double n1 = 0, n2 = 0;
+      for (std::size_t k = 0; k < 5; ++k) {
+        n1 += j["counts"][i][k].get<double>();
+        n2 += j["compare"]["counts"][i][k].get<double>();
+      }
+      const Interval expected = wald_difference(x1, n1, x2, n2, method == "wald-cc");
+      expect_rel(j["recall_diff"][i]["ci_low"].get<double>(), expected.low, method + " low");
+      expect_rel(j["recall_diff"][i]["ci_high"].get<double>(), expected.high, method + " high");
+    }
+  }
+  const auto text = test::run_cli("stats confusion " + d + "responses_recorded.csv --truth material --response answer "
+                                  "--compare " + d + "responses_synthesised.csv --interval wald-cc", dir);
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find("95% Wald (continuity-corrected) interval"), std::string::npos) << text.out;
+  const auto bad = test::run_cli("stats confusion " + d + "responses_recorded.csv --truth material --response answer "
+                                 "--interval score", dir);
+  EXPECT_EQ(bad.exit_code, 2) << bad.err;  // a bad option is bad input: one line, exit 2
+  EXPECT_EQ(test::count_lines(bad.err), 1u) << bad.err;
+  EXPECT_NE(bad.err.find("--interval: score not in {newcombe,wald,wald-cc}"), std::string::npos) << bad.err;
 }
 
 TEST(CliStatsConfusion, DefaultLabelsAreSortedAndTablePrints) {
