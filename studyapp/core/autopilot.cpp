@@ -58,11 +58,10 @@ AutopilotSummary run_autopilot(const AutopilotOptions& o, const std::function<vo
     const Trial trial = session.current();
     const Block& block = session.current_block();
     if (const auto* s = std::get_if<StaircaseBlock>(&block.body)) {
-      StaircaseTrack& track = session.staircase();
-      const bool correct = listener.staircase_correct(*s, track.level());
+      const AbInterval chosen = listener.staircase_choice(*s, session.staircase().level(), session.staircase_comparison());
       const std::size_t before = session.current_index();
       session.log_event(EventKind::play, trial.stimuli.back(), unix_now_ms());
-      session.staircase_step(correct, 1200.0, unix_now_ms());
+      session.staircase_step(chosen, 1200.0, unix_now_ms());
       if (session.current_index() != before) {  // the track finished: the trial is answered
         ++summary.answered_now;
         if (log) log("answered " + trial.block_id + " (staircase track)");
@@ -71,9 +70,10 @@ AutopilotSummary run_autopilot(const AutopilotOptions& o, const std::function<vo
     }
     const SimulatedAnswer a = listener.answer(block, trial);
     for (const auto& name : trial.stimuli) session.log_event(EventKind::play, name, unix_now_ms());
-    session.answer(a.value, a.rt_ms, a.plays, unix_now_ms());
+    const nlohmann::json value = a.value;
+    session.answer(value, a.rt_ms, a.plays, unix_now_ms());
     ++summary.answered_now;
-    if (log) log("answered " + trial.block_id + " trial " + std::to_string(trial.index) + ": " + a.value.dump());
+    if (log) log("answered " + trial.block_id + " trial " + std::to_string(trial.index) + ": " + value.dump());
   }
   summary.finished = session.finished();
   return summary;

@@ -115,13 +115,17 @@ Session::Session(const Protocol& protocol, const std::string& protocol_text, con
   if (!finished() && current().type == BlockType::staircase) {
     // Rebuild an interrupted track from its committed steps.
     staircase();
+    bool all_chosen = true;
     for (const auto& e : store_->events(session_, position_of(current())))
       if (e.kind == EventKind::step) {
         const auto d = nlohmann::json::parse(e.detail_json);
         track_->record(d.at("correct").get<bool>());
+        if (d.contains("chosen")) track_chosen_.push_back(d["chosen"].get<ChoiceAnswer>().chosen);
+        else all_chosen = false;  // a step stored before choices were kept
         track_rt_ms_ += d.value("rt_ms", 0.0);
         ++track_plays_;
       }
+    if (!all_chosen) track_chosen_.clear();
   }
 }
 
@@ -166,26 +170,36 @@ StaircaseTrack& Session::staircase() {
   return *track_;
 }
 
-void Session::staircase_step(bool correct, double rt_ms, std::int64_t now_ms) {
+AbInterval Session::staircase_comparison() {
+  const std::size_t step = staircase().levels().size();
+  return ms::staircase_comparison(schedule_.seed, current().block_id, current().index, step);
+}
+
+bool Session::staircase_step(AbInterval chosen, double rt_ms, std::int64_t now_ms) {
   StaircaseTrack& track = staircase();
   const auto* s = std::get_if<StaircaseBlock>(&current_block().body);
-  const nlohmann::json detail{{"step", track.levels().size()}, {"level", track.level()}, {"correct", correct},
-                              {"rt_ms", rt_ms}};
+  const AbInterval comparison = staircase_comparison();
+  const bool correct = staircase_correct(comparison, chosen);
+  const nlohmann::json detail{{"step", track.levels().size()}, {"level", track.level()},
+                              {"comparison", to_string(comparison)}, {"chosen", to_string(chosen)},
+                              {"correct", correct}, {"rt_ms", rt_ms}};
   store_->record_event(session_, {position_of(current()), EventKind::step, s->stimulus.name, now_ms, detail.dump()});
+  const bool known_choices = track_chosen_.size() == track.levels().size();
   track.record(correct);
+  if (known_choices) track_chosen_.push_back(chosen);
   track_rt_ms_ += rt_ms;
   ++track_plays_;
-  if (!track.finished()) return;
-  nlohmann::json value{{"levels", track.levels()}, {"correct", track.answers()}, {"parameter", s->parameter}};
-  const auto threshold = track.threshold();
-  value["threshold"] = threshold ? nlohmann::json(*threshold) : nlohmann::json(nullptr);
+  if (!track.finished()) return correct;
+  StaircaseAnswer value{s->parameter, track.levels(), track.answers(), track_chosen_, track.threshold()};
   const double rt = track_rt_ms_;
   const int plays = track_plays_;
   answer(value, rt, plays, now_ms);
+  return correct;
 }
 
 void Session::advance() {
   track_.reset();
+  track_chosen_.clear();
   track_plays_ = 0;
   track_rt_ms_ = 0.0;
   ++current_;

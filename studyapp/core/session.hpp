@@ -1,8 +1,9 @@
 // A participant's session: the protocol's schedule walked trial by trial. Every answer is committed to
 // the results store before the session moves on; opening the same study + participant + database
 // again resumes the unfinished session at its first unanswered trial with the same schedule.
-// Staircase trials run their track inside the trial: each step is committed as a "step" event, so a
-// track interrupted by a crash continues where it stopped. While a Session object lives it holds the
+// Staircase trials run their track inside the trial: core draws which interval holds the comparison
+// and scores the listener's choice; each step is committed as a "step" event, so a track interrupted
+// by a crash continues where it stopped, with the same draws. While a Session object lives it holds the
 // session's lease (a heartbeat thread renews it), so no other process can answer for the participant.
 #pragma once
 #include <cstdint>
@@ -69,8 +70,13 @@ class Session {
 
   // Staircase trials: the live track of the current trial (rebuilt from stored steps on resume).
   StaircaseTrack& staircase();
-  // Commits one step; when the track finishes, answers the trial with the whole track and advances.
-  void staircase_step(bool correct, double rt_ms, std::int64_t now_ms);
+  // Which interval holds the comparison in the step about to be answered (staircase_comparison of the
+  // schedule's seed and the trial's position: the same after a resume).
+  AbInterval staircase_comparison();
+  // Scores the interval the listener chose, commits the step (level, comparison, choice, correct) and,
+  // when the track finishes, answers the trial with the whole track and advances. Returns whether the
+  // choice was right.
+  bool staircase_step(AbInterval chosen, double rt_ms, std::int64_t now_ms);
 
   // Marks the session finished in the store (done automatically after the last answer).
   void finish(std::int64_t now_ms);
@@ -88,6 +94,7 @@ class Session {
   std::size_t current_ = 0;
   bool at_break_ = false;
   std::optional<StaircaseTrack> track_;
+  std::vector<AbInterval> track_chosen_;  // per step; empty when a resumed track's early steps lack it
   int track_plays_ = 0;
   double track_rt_ms_ = 0.0;
   std::vector<std::string> warnings_;

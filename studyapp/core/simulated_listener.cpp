@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "studyapp/core/response_format.hpp"
 
 namespace ms {
 
@@ -53,7 +52,7 @@ double SimulatedListener::noisy(double d) {
   return std::max(0.0, d + n(rng_));
 }
 
-bool SimulatedListener::staircase_correct(const StaircaseBlock& block, double level) {
+AbInterval SimulatedListener::staircase_choice(const StaircaseBlock& block, double level, AbInterval comparison) {
   const std::vector<std::string> set{block.parameter + "=" + format_number(level)};
   const PerceptualProfile& cmp =
       profile(cache_.hash_with(block.stimulus.name, set), cache_.samples_with(block.stimulus.name, set));
@@ -61,7 +60,8 @@ bool SimulatedListener::staircase_correct(const StaircaseBlock& block, double le
   const double d = perceptual_distance_db(ref, cmp);
   // 2-interval psychometric function: chance 50 %, 75 % correct at 1.5 dB.
   const double p = 0.5 + 0.5 * (1.0 - std::exp(-std::pow(d / 1.5, 2.0) * std::log(2.0)));
-  return std::uniform_real_distribution<double>(0.0, 1.0)(rng_) < p;
+  const bool told_apart = std::uniform_real_distribution<double>(0.0, 1.0)(rng_) < p;
+  return told_apart ? other(comparison) : comparison;
 }
 
 SimulatedAnswer SimulatedListener::answer(const Block& block, const Trial& trial) {
@@ -73,7 +73,7 @@ SimulatedAnswer SimulatedListener::answer(const Block& block, const Trial& trial
   a.plays = int(s.size());
   switch (block.type) {
     case BlockType::instructions:
-      a.value = "ok";
+      a.value = InstructionsAnswer{};
       a.rt_ms = 3000.0;
       a.plays = 0;
       break;
@@ -82,29 +82,30 @@ SimulatedAnswer SimulatedListener::answer(const Block& block, const Trial& trial
       const double d = noisy(distance_db(s.at(0), s.at(1)));
       a.rt_ms = rt(d);
       if (mode == AbMode::same_different) {
-        a.value = d > 1.0 ? "different" : "same";
+        a.value = SameDifferentAnswer{d > 1.0};
       } else if (mode == AbMode::abx) {
-        a.value = noisy(distance_db(s.at(0), s.at(2))) <= noisy(distance_db(s.at(1), s.at(2))) ? "A" : "B";
+        const bool x_is_a = noisy(distance_db(s.at(0), s.at(2))) <= noisy(distance_db(s.at(1), s.at(2)));
+        a.value = ChoiceAnswer{x_is_a ? AbInterval::a : AbInterval::b};
       } else if (mode == AbMode::bipolar && !trial.reference.empty()) {
         // B against A as a match to the reference: positive when B sounds closer to it.
         const double gain = noisy(distance_db(s.at(0), trial.reference)) - noisy(distance_db(s.at(1), trial.reference));
-        a.value = int(std::lround(clamp(gain / 2.0, -3.0, 3.0)));
+        a.value = BipolarAnswer{int(std::lround(clamp(gain / 2.0, -3.0, 3.0)))};
       } else if (mode == AbMode::bipolar) {
-        a.value = int(std::lround(clamp(-d / 2.0 + 0.5 * unit(rng_), -3.0, 3.0)));
+        a.value = BipolarAnswer{int(std::lround(clamp(-d / 2.0 + 0.5 * unit(rng_), -3.0, 3.0)))};
       } else {  // preference, 2afc: the brighter sound (higher loudness-weighted Bark centroid)
         const double ca = profile(s.at(0)).centroid_bark + 0.3 * unit(rng_);
         const double cb = profile(s.at(1)).centroid_bark + 0.3 * unit(rng_);
-        a.value = ca >= cb ? "A" : "B";
+        a.value = ChoiceAnswer{ca >= cb ? AbInterval::a : AbInterval::b};
       }
       break;
     }
     case BlockType::mushra: {
-      nlohmann::json scores = nlohmann::json::object();
+      MushraAnswer scores;
       double hardest = 1e9;
       for (const auto& name : s) {
         const double d = noisy(distance_db(trial.reference, name));
         hardest = std::min(hardest, d);
-        scores[name] = std::lround(clamp(100.0 * std::exp(-d / 6.0), 0.0, 100.0));
+        scores.scores[name] = std::round(clamp(100.0 * std::exp(-d / 6.0), 0.0, 100.0));
       }
       a.value = scores;
       a.rt_ms = 4000.0 * double(s.size()) + rt(hardest);
@@ -116,7 +117,7 @@ SimulatedAnswer SimulatedListener::answer(const Block& block, const Trial& trial
       const double d_mod = m.modulus ? distance_db(m.modulus->at(0).name, m.modulus->at(1).name) : 3.0;
       const double d = noisy(distance_db(s.at(0), s.at(1)));
       const double ratio = (d + 0.5) / (d_mod + 0.5) * std::exp(0.1 * unit(rng_));
-      a.value = std::max(1.0, std::round(m.modulus_value * ratio));
+      a.value = MagnitudeAnswer{std::max(1.0, std::round(m.modulus_value * ratio))};
       a.rt_ms = rt(d) + 1500.0;
       break;
     }
@@ -134,18 +135,18 @@ SimulatedAnswer SimulatedListener::answer(const Block& block, const Trial& trial
         if (d < best_d) best_d = d, best = l;
       }
       if (best.empty()) best = labels.at(std::size_t(std::uniform_int_distribution<std::size_t>(0, labels.size() - 1)(rng_)));
-      a.value = best;
+      a.value = IdentifyAnswer{best};
       a.rt_ms = rt(best_d < 1e300 ? best_d : 0.0);
       break;
     }
     case BlockType::rating: {
       const PerceptualProfile& p = profile(s.at(0));
-      nlohmann::json ratings = nlohmann::json::object();
+      RatingAnswer ratings;
       for (const auto& attr : std::get<RatingBlock>(block.body).attributes) {
         const bool temporal = attr.name.find("dur") != std::string::npos || attr.name.find("ring") != std::string::npos;
         const double x = temporal ? std::log(std::max(1e-3, p.decay_s) / 0.5) : (p.centroid_bark - 12.0) / 4.0;
         const double v = 1.0 + double(attr.points - 1) * logistic(x + 0.3 * unit(rng_));
-        ratings[attr.name] = int(std::lround(clamp(v, 1.0, double(attr.points))));
+        ratings.points[attr.name] = int(std::lround(clamp(v, 1.0, double(attr.points))));
       }
       a.value = ratings;
       a.rt_ms = rt(1.0) + 1000.0;
@@ -156,7 +157,7 @@ SimulatedAnswer SimulatedListener::answer(const Block& block, const Trial& trial
       // (default: the stimulus as the protocol defines it), as a listener matching a target by ear would.
       const auto& adj = std::get<AdjustBlock>(block.body);
       const PerceptualProfile target = profile(adj.target ? adj.target->name : adj.paramset.name);
-      nlohmann::json values = nlohmann::json::object();
+      AdjustAnswer values;
       a.plays = 0;
       for (const auto& slider : adj.sliders) {
         double best_v = slider.min, best_d = 1e300;
@@ -168,7 +169,7 @@ SimulatedAnswer SimulatedListener::answer(const Block& block, const Trial& trial
           ++a.plays;
           if (d < best_d) best_d = d, best_v = v;
         }
-        values[slider.key] = best_v;
+        values.values[slider.key] = best_v;
       }
       a.value = values;
       a.rt_ms = 2500.0 * a.plays;
@@ -176,15 +177,15 @@ SimulatedAnswer SimulatedListener::answer(const Block& block, const Trial& trial
     }
     case BlockType::questionnaire: {
       const auto& q = std::get<QuestionnaireBlock>(block.body);
-      nlohmann::json answers = nlohmann::json::object();
+      QuestionnaireAnswer answers;
       for (std::size_t i = 0; i < q.questions.size(); ++i)
-        answers[question_id(q.questions[i], i)] = q.questions[i].options.empty() ? "autopilot" : q.questions[i].options[0];
+        answers.answers[question_id(q.questions[i], i)] = q.questions[i].options.empty() ? "autopilot" : q.questions[i].options[0];
       a.value = answers;
       a.rt_ms = 5000.0;
       a.plays = 0;
       break;
     }
-    case BlockType::staircase:  // answered step by step through staircase_correct
+    case BlockType::staircase:  // answered step by step through staircase_choice
     case BlockType::unknown:
       break;
   }

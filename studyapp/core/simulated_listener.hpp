@@ -1,15 +1,14 @@
 // The autopilot's listener: answers any trial from perceptual distances between the trial's stimuli
 // (perceptual_distance.hpp) plus Gaussian decision noise, seeded, so a protocol can be piloted,
-// demonstrated and tested without a person. Its answers follow the response formats of
-// response_format.hpp, and its reaction times grow with how hard the decision was.
+// demonstrated and tested without a person. Its answers are answers.hpp's typed answers, and its
+// reaction times grow with how hard the decision was.
 #pragma once
 #include <cstdint>
 #include <map>
 #include <random>
 #include <string>
 
-#include <nlohmann/json.hpp>
-
+#include "studyapp/core/answers.hpp"
 #include "studyapp/core/perceptual_distance.hpp"
 #include "studyapp/core/protocol.hpp"
 #include "studyapp/core/schedule.hpp"
@@ -18,7 +17,7 @@
 namespace ms {
 
 struct SimulatedAnswer {
-  nlohmann::json value;
+  Answer value;
   double rt_ms = 0.0;
   int plays = 1;
 };
@@ -29,8 +28,9 @@ class SimulatedListener {
   SimulatedListener(StimulusCache& cache, std::uint64_t seed, double noise_db = 1.0);
 
   SimulatedAnswer answer(const Block& block, const Trial& trial);
-  // One staircase step: is the comparison at `level` told apart from the reference?
-  bool staircase_correct(const StaircaseBlock& block, double level);
+  // One staircase step with the comparison at `level` in interval `comparison`: the interval the
+  // listener names as the reference (the other one when the comparison is told apart).
+  AbInterval staircase_choice(const StaircaseBlock& block, double level, AbInterval comparison);
   double distance_db(const std::string& a, const std::string& b);  // between named stimuli
 
  private:

@@ -2,6 +2,7 @@
 #include "studyapp/core/staircase_track.hpp"
 
 #include "analysis/stats/staircase.hpp"
+#include "studyapp/core/schedule.hpp"
 
 namespace ms {
 
@@ -39,5 +40,15 @@ std::optional<double> StaircaseTrack::threshold() const {
   // The level the track moved to after the last answer counts too: its last reversal happened there.
   return staircase_threshold(levels_, level_).threshold;
 }
+
+AbInterval staircase_comparison(std::uint64_t schedule_seed, const std::string& block_id, std::size_t trial_index,
+                              std::size_t step) {
+  // participant_seed is the keyed splitmix64/FNV-1a mix; the key names the step.
+  const std::uint64_t h =
+      participant_seed(schedule_seed, "staircase/" + block_id + "/" + std::to_string(trial_index) + "/" + std::to_string(step));
+  return (h >> 63) != 0 ? AbInterval::b : AbInterval::a;
+}
+
+bool staircase_correct(AbInterval comparison, AbInterval chosen) { return chosen != comparison; }
 
 }  // namespace ms

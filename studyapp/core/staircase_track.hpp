@@ -2,10 +2,16 @@
 // by -step (harder), `up` wrong answers in a row move it by +step (easier). The protocol's `step` is
 // the change that makes the difference EASIER to hear (for the 2002 a_v track: start 20 dB, step -1:
 // a lower a_v prunes more modes). The track ends after `reversals` reversals or kMaxSteps steps.
+// Each step plays the reference, then A and B: one of them the reference again, the other the
+// comparison; which one is drawn from the session's seed, so a resumed track plays the same.
 #pragma once
 #include <cstddef>
+#include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
+
+#include "studyapp/core/answers.hpp"
 
 namespace ms {
 
@@ -33,5 +39,14 @@ class StaircaseTrack {
   std::vector<double> levels_;
   std::vector<bool> answers_;
 };
+
+// The interval (A or B) holding the comparison at `step` (0-based) of the track of trial `trial_index`
+// of block `block_id`: a splitmix64 mix of the session's schedule seed and the position, the same with
+// every standard library.
+AbInterval staircase_comparison(std::uint64_t schedule_seed, const std::string& block_id, std::size_t trial_index,
+                              std::size_t step);
+
+// The listener names the interval that is the reference again: right when it is not the comparison.
+bool staircase_correct(AbInterval comparison, AbInterval chosen);
 
 }  // namespace ms

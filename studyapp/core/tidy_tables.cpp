@@ -1,10 +1,11 @@
-// tidy_tables: one parser of each response format (response_format.hpp) into long rows.
+// tidy_tables: each stored answer read as its typed answer (answers.hpp) and laid out in long rows.
 #include "studyapp/core/tidy_tables.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 
+#include "studyapp/core/answers.hpp"
 #include "studyapp/core/response_format.hpp"
 #include "studyapp/core/staircase_track.hpp"
 #include "synthesis/csv.hpp"
@@ -13,11 +14,45 @@ namespace ms {
 
 namespace {
 
+// A cell as the stored JSON writes the value: "20.0" for a stored double, "87" for an integer.
 std::string cell(const nlohmann::json& v) {
   if (v.is_string()) return v.get<std::string>();
   if (v.is_boolean()) return v.get<bool>() ? "1" : "0";
   if (v.is_null()) return "NA";
   return v.dump();
+}
+
+// One row per step of a track. Where the track moved after each answer is the rule replayed, so the
+// last trial's reversal counts; the interval chosen only where the store keeps it.
+std::vector<std::vector<std::string>> staircase_rows(const StaircaseAnswer& a, const StaircaseBlock* block,
+                                                     const std::string& stimulus, bool with_chosen) {
+  const std::size_t n = a.levels.size();
+  std::vector<std::string> next(n, "NA");
+  for (std::size_t i = 0; i + 1 < n; ++i) next[i] = cell(a.levels[i + 1]);
+  if (block) {
+    StaircaseTrack track(block->start, block->step, block->down, block->up, block->reversals);
+    bool same = true;
+    for (std::size_t i = 0; i < n; ++i) {
+      same = same && track.level() == a.levels[i];
+      track.record(a.correct[i]);
+    }
+    if (same && n > 0) next.back() = csv::number(track.level());
+  }
+  std::vector<std::vector<std::string>> rows;
+  for (std::size_t i = 0; i < n; ++i) {
+    rows.push_back({stimulus, a.parameter, std::to_string(i), cell(a.levels[i]), next[i], a.correct[i] ? "1" : "0",
+                    a.threshold ? cell(*a.threshold) : "NA"});
+    if (with_chosen) rows.back().push_back(a.chosen.empty() ? "NA" : to_string(a.chosen[i]));
+  }
+  return rows;
+}
+
+// Does any staircase answer keep the intervals chosen? Stores made before they were kept export the
+// staircase table without the `chosen` column, as they always did.
+bool any_staircase_choices(const std::vector<ResponseRow>& rows) {
+  return std::any_of(rows.begin(), rows.end(), [](const ResponseRow& r) {
+    return r.block_type == "staircase" && nlohmann::json::parse(r.value_json).contains("chosen");
+  });
 }
 
 const std::vector<std::string> kBase{"study", "participant", "session", "autopilot", "block", "trial"};
@@ -30,7 +65,7 @@ const std::map<std::string, std::vector<std::string>>& type_columns() {
       {"identify", {"stimulus", "truth", "response", "correct"}},
       {"rating", {"stimulus", "attribute", "value"}},
       {"adjust", {"stimulus", "key", "value", "plays", "rt_ms"}},
-      {"staircase", {"stimulus", "parameter", "step", "level", "next_level", "correct", "threshold"}},
+      {"staircase", {"stimulus", "parameter", "step", "level", "next_level", "correct", "threshold"}},  // + chosen
       {"questionnaire", {"question", "answer"}}};
   return c;
 }
@@ -90,6 +125,7 @@ std::string identify_truth(const StimulusSource* stimulus, const std::string& st
 std::map<std::string, std::string> tidy_tables(const std::vector<ResponseRow>& rows,
                                                const std::map<std::string, Protocol>& protocols) {
   std::vector<std::string> factors = factor_names(protocols);
+  const bool staircase_choices = any_staircase_choices(rows);
   std::map<std::string, std::string> out;
   for (const ResponseRow& r : rows) {
     const auto cols = type_columns().find(r.block_type);
@@ -101,6 +137,7 @@ std::map<std::string, std::string> tidy_tables(const std::vector<ResponseRow>& r
     if (csv.empty()) {
       std::vector<std::string> header = kBase;
       header.insert(header.end(), cols->second.begin(), cols->second.end());
+      if (r.block_type == "staircase" && staircase_choices) header.push_back("chosen");
       // A factor named like a column gets a suffix rather than a duplicate column.
       for (const std::string& f : factors)
         header.push_back(std::find(header.begin(), header.end(), f) == header.end() ? f : f + "_factor");
@@ -121,49 +158,34 @@ std::map<std::string, std::string> tidy_tables(const std::vector<ResponseRow>& r
       csv += csv::line(line);
     };
     const auto s = nlohmann::json::parse(r.stimuli_json);
-    const auto v = nlohmann::json::parse(r.value_json);
+    const Answer answer = read_stored_answer(r.block_type, nlohmann::json::parse(r.value_json));
     const auto at = [&](std::size_t i) { return i < s.size() ? s[i].get<std::string>() : std::string(); };
     if (r.block_type == "ab") {
       std::string correct = "NA";
-      if (s.size() == 3 && v.is_string()) correct = abx_correct(s, v.get<std::string>()) ? "1" : "0";
-      add({at(0), at(1), at(2), cell(v), correct}, at(0), at(1));
-    } else if (r.block_type == "mushra") {
+      const auto* choice = std::get_if<ChoiceAnswer>(&answer);
+      if (s.size() == 3 && choice) correct = abx_correct(s, choice->chosen) ? "1" : "0";
+      add({at(0), at(1), at(2), cell(answer), correct}, at(0), at(1));
+    } else if (const auto* mushra = std::get_if<MushraAnswer>(&answer)) {
       // The hidden reference is rated under its own name (`stats mushra --reference NAME`).
-      for (const auto& [name, score] : v.items()) add({name, cell(score)}, name);
-    } else if (r.block_type == "magnitude") {
+      for (const auto& [name, score] : mushra->scores) add({name, cell(mushra_score_json(score))}, name);
+    } else if (const auto* magnitude = std::get_if<MagnitudeAnswer>(&answer)) {
       const auto* mb = block ? std::get_if<MagnitudeBlock>(&block->body) : nullptr;
       std::vector<std::string> modulus{"", "", "NA"};
       if (mb && mb->modulus) modulus = {(*mb->modulus)[0].name, (*mb->modulus)[1].name, csv::number(mb->modulus_value)};
-      add({at(0), at(1), cell(v), modulus[0], modulus[1], modulus[2]}, at(0), at(1));
-    } else if (r.block_type == "identify") {
+      add({at(0), at(1), cell(magnitude->value), modulus[0], modulus[1], modulus[2]}, at(0), at(1));
+    } else if (const auto* identify = std::get_if<IdentifyAnswer>(&answer)) {
       const std::string truth = block ? identify_truth(stimulus(at(0)), at(0), *block) : "";
-      add({at(0), truth, cell(v), truth.empty() ? "NA" : (truth == cell(v) ? "1" : "0")}, at(0));
-    } else if (r.block_type == "rating") {
-      for (const auto& [attr, value] : v.items()) add({at(0), attr, cell(value)}, at(0));
-    } else if (r.block_type == "adjust") {
-      for (const auto& [k2, value] : v.items())
-        add({at(0), k2, cell(value), std::to_string(r.plays), nlohmann::json(r.rt_ms).dump()}, at(0));
-    } else if (r.block_type == "staircase") {
-      const auto& levels = v.at("levels");
-      const auto& correct = v.at("correct");
-      // Where the track moved after each answer (the rule replayed), so the last trial's reversal counts.
-      std::vector<std::string> next(levels.size(), "NA");
-      for (std::size_t i = 0; i + 1 < levels.size(); ++i) next[i] = cell(levels[i + 1]);
-      if (const auto* sb = block ? std::get_if<StaircaseBlock>(&block->body) : nullptr) {
-        StaircaseTrack track(sb->start, sb->step, sb->down, sb->up, sb->reversals);
-        bool same = true;
-        for (std::size_t i = 0; i < levels.size() && i < correct.size(); ++i) {
-          same = same && levels[i].is_number() && track.level() == levels[i].get<double>();
-          track.record(correct[i].is_boolean() ? correct[i].get<bool>() : correct[i] == 1);
-        }
-        if (same && !levels.empty()) next.back() = csv::number(track.level());
-      }
-      for (std::size_t i = 0; i < levels.size(); ++i)
-        add({at(0), v.value("parameter", ""), std::to_string(i), cell(levels[i]), next[i], cell(correct[i]),
-             cell(v.at("threshold"))},
-            at(0));
-    } else if (r.block_type == "questionnaire") {
-      for (const auto& [q, answer] : v.items()) add({q, cell(answer)}, "");
+      add({at(0), truth, identify->label, truth.empty() ? "NA" : (truth == identify->label ? "1" : "0")}, at(0));
+    } else if (const auto* rating = std::get_if<RatingAnswer>(&answer)) {
+      for (const auto& [attr, value] : rating->points) add({at(0), attr, std::to_string(value)}, at(0));
+    } else if (const auto* adjust = std::get_if<AdjustAnswer>(&answer)) {
+      for (const auto& [key, value] : adjust->values)
+        add({at(0), key, cell(value), std::to_string(r.plays), cell(r.rt_ms)}, at(0));
+    } else if (const auto* track = std::get_if<StaircaseAnswer>(&answer)) {
+      const auto* sb = block ? std::get_if<StaircaseBlock>(&block->body) : nullptr;
+      for (std::vector<std::string>& row : staircase_rows(*track, sb, at(0), staircase_choices)) add(std::move(row), at(0));
+    } else if (const auto* questionnaire = std::get_if<QuestionnaireAnswer>(&answer)) {
+      for (const auto& [q, text] : questionnaire->answers) add({q, text}, "");
     }
   }
   return out;

@@ -1,6 +1,6 @@
 // A/B trials: same/different, preference, ABX ("X is A / X is B"), 2AFC, and the bipolar -3..+3 comparison
 // of B with A (seven radio buttons) — against the pair's reference when the protocol gives one ([A, B, REF]:
-// the reference is played after A and B, and +3 means B is much closer to it). Answers per response_format.hpp.
+// the reference is played after A and B, and +3 means B is much closer to it). Answers are answers.hpp's.
 #include <QRadioButton>
 
 #include "studyapp/gui/trial_view.hpp"
@@ -65,11 +65,11 @@ class AbView : public TrialView {
   }
 
  private:
-  nlohmann::json answer() const {
-    if (mode_ == AbMode::bipolar) return bipolar_->checkedId();
+  Answer answer() const {
+    if (mode_ == AbMode::bipolar) return BipolarAnswer{bipolar_->checkedId()};
     const int id = choices_->checkedId();
-    if (mode_ == AbMode::same_different) return id == 0 ? "same" : "different";
-    return id == 0 ? "A" : "B";
+    if (mode_ == AbMode::same_different) return SameDifferentAnswer{id == 1};
+    return ChoiceAnswer{id == 0 ? AbInterval::a : AbInterval::b};
   }
 
   AbMode mode_;

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <QElapsedTimer>
 #include <QGridLayout>
 #include <QSlider>
@@ -77,11 +78,7 @@ class AdjustView : public TrialView {
     status_ = new QLabel(body_widget());
     status_->setObjectName("resynth-status");
     layout_->addWidget(status_);
-    add_next([this] {
-      nlohmann::json a = nlohmann::json::object();
-      for (std::size_t i = 0; i < sliders_.size(); ++i) a[block_.sliders[i].key] = to_value(block_.sliders[i], sliders_[i]->value());
-      return a;
-    });
+    add_next([this] { return AdjustAnswer{slider_values()}; });
     if (!c.previewing()) request_render();
   }
 
@@ -107,11 +104,15 @@ class AdjustView : public TrialView {
     return std::clamp(static_cast<int>(std::lround(100.0 * (*v - s.min) / (s.max - s.min))), 0, 100);
   }
 
+  std::map<std::string, double> slider_values() const {
+    std::map<std::string, double> values;
+    for (std::size_t i = 0; i < sliders_.size(); ++i) values[block_.sliders[i].key] = to_value(block_.sliders[i], sliders_[i]->value());
+    return values;
+  }
+
   // What the played variant was: the slider values, its recipe hash and how long it took to make.
   std::string variant_detail(double latency_ms, double render_ms) const {
-    nlohmann::json d = nlohmann::json::object();
-    for (std::size_t i = 0; i < sliders_.size(); ++i) d[block_.sliders[i].key] = to_value(block_.sliders[i], sliders_[i]->value());
-    nlohmann::json detail{{"set", d}, {"resynth_ms", latency_ms}, {"render_ms", render_ms}};
+    nlohmann::json detail{{"set", slider_values()}, {"resynth_ms", latency_ms}, {"render_ms", render_ms}};
     try {
       detail["hash"] = controller_.cache().hash_with(block_.paramset.name, overrides());
     } catch (const std::exception&) {

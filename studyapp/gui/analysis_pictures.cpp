@@ -11,6 +11,7 @@
 
 #include "analysis/stats/confusion.hpp"
 #include "analysis/stats/mushra.hpp"
+#include "studyapp/core/answers.hpp"
 #include "studyapp/core/block_summaries.hpp"
 #include "studyapp/core/mushra_boxes.hpp"
 #include "studyapp/plots/plots.hpp"
@@ -20,6 +21,12 @@ namespace ms::gui {
 namespace {
 
 std::string svg_of(const std::string& png) { return png.substr(0, png.size() - 4) + ".svg"; }
+
+// A row's stored answer as its block type's typed answer (the store only holds checked answers).
+template <class T>
+T stored_answer(const ResponseRow& r) {
+  return std::get<T>(read_stored_answer(r.block_type, nlohmann::json::parse(r.value_json)));
+}
 
 struct BlockRows {
   std::string type;
@@ -31,10 +38,9 @@ Picture confusion_picture(const std::string& block_id, const BlockRows& b, const
   std::set<std::string> all;
   for (const ResponseRow* r : b.rows) {
     const auto stimuli = nlohmann::json::parse(r->stimuli_json);
-    const auto value = nlohmann::json::parse(r->value_json);
-    if (!stimuli.is_array() || stimuli.empty() || !value.is_string()) continue;
+    if (!stimuli.is_array() || stimuli.empty()) continue;
     truth.push_back(stimuli[0].get<std::string>());
-    response.push_back(value.get<std::string>());
+    response.push_back(stored_answer<IdentifyAnswer>(*r).label);
     all.insert(truth.back());
     all.insert(response.back());
   }
@@ -61,12 +67,9 @@ Picture mushra_picture(const std::string& block_id, const BlockRows& b, const st
   std::vector<MushraRating> ratings;
   std::vector<std::string> conditions;
   for (const ResponseRow* r : b.rows) {
-    const auto value = nlohmann::json::parse(r->value_json);
-    if (!value.is_object()) continue;
-    for (const auto& [name, score] : value.items()) {
-      if (!score.is_number()) continue;
+    for (const auto& [name, score] : stored_answer<MushraAnswer>(*r).scores) {
       ratings.push_back({r->participant_code + "#" + std::to_string(r->session), std::to_string(r->trial_index), name,
-                         score.get<double>()});
+                         score});
       conditions.push_back(name);
     }
   }
@@ -91,12 +94,10 @@ Picture mushra_picture(const std::string& block_id, const BlockRows& b, const st
 Picture staircase_picture(const std::string& block_id, const BlockRows& b, const std::string& out_dir) {
   std::vector<plots::Series> tracks;
   for (const ResponseRow* r : b.rows) {
-    const auto value = nlohmann::json::parse(r->value_json);
-    if (!value.is_object() || !value.contains("levels") || !value["levels"].is_array()) continue;
+    const StaircaseAnswer track = stored_answer<StaircaseAnswer>(*r);
     plots::Series s;
     s.name = r->participant_code + (r->autopilot ? " (simulated)" : "");
-    for (std::size_t i = 0; i < value["levels"].size(); ++i)
-      s.points.push_back({static_cast<double>(i + 1), value["levels"][i].get<double>()});
+    for (std::size_t i = 0; i < track.levels.size(); ++i) s.points.push_back({static_cast<double>(i + 1), track.levels[i]});
     tracks.push_back(std::move(s));
   }
   plots::PlotOptions o;

@@ -16,7 +16,7 @@ class IdentifyView : public TrialView {
     if (spec)
       for (const std::string& l : spec->labels) labels << QString::fromStdString(l);
     choices_ = add_choices(labels, labels);
-    add_next([this, labels] { return labels[choices_->checkedId()].toStdString(); });
+    add_next([this, labels] { return IdentifyAnswer{labels[choices_->checkedId()].toStdString()}; });
   }
 
  protected:

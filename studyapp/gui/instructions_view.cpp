@@ -10,7 +10,7 @@ class InstructionsView : public TrialView {
   InstructionsView(StudyController& c, QWidget* parent) : TrialView(c, parent) {
     const auto* spec = std::get_if<InstructionsBlock>(&c.block().body);
     add_prompt(QString::fromStdString(spec ? spec->text : std::string()))->setObjectName("instructions");
-    add_next([] { return nlohmann::json("ok"); }, "Continue");
+    add_next([] { return InstructionsAnswer{}; }, "Continue");
   }
 };
 

@@ -43,7 +43,7 @@ class MagnitudeView : public TrialView {
     entry_->setMaximumWidth(entry_->fontMetrics().averageCharWidth() * 40);
     connect(entry_, &QLineEdit::textChanged, this, [this] { refresh(); });
     layout_->addWidget(entry_);
-    add_next([this] { return *read_magnitude(entry_->text().toStdString(), zero_allowed_).value; });
+    add_next([this] { return MagnitudeAnswer{*read_magnitude(entry_->text().toStdString(), zero_allowed_).value}; });
     gate_pair();
     QTimer::singleShot(0, entry_, [e = entry_] { e->setFocus(Qt::OtherFocusReason); });
   }

@@ -74,8 +74,8 @@ class MushraView : public TrialView {
                                                : QString("A")));
     names_ = trial.stimuli;
     add_next([this] {
-      nlohmann::json a = nlohmann::json::object();
-      for (std::size_t i = 0; i < names_.size(); ++i) a[names_[i]] = sliders_[i]->value();
+      MushraAnswer a;
+      for (std::size_t i = 0; i < names_.size(); ++i) a.scores[names_[i]] = sliders_[i]->value();
       return a;
     });
   }

@@ -4,7 +4,7 @@
 #include <QLineEdit>
 #include <QRadioButton>
 
-#include "studyapp/core/response_format.hpp"
+#include "studyapp/core/answers.hpp"
 #include "studyapp/gui/trial_view.hpp"
 
 namespace ms::gui {
@@ -44,10 +44,10 @@ class QuestionnaireView : public TrialView {
     }
     layout_->addLayout(form);
     add_next([this] {
-      nlohmann::json a = nlohmann::json::object();
+      QuestionnaireAnswer a;
       for (const Item& it : items_)
-        a[it.id] = it.text ? it.text->text().toStdString()
-                           : it.option_texts[static_cast<std::size_t>(it.options->checkedId())];
+        a.answers[it.id] = it.text ? it.text->text().toStdString()
+                                   : it.option_texts[static_cast<std::size_t>(it.options->checkedId())];
       return a;
     });
   }

@@ -43,8 +43,8 @@ class RatingView : public TrialView {
       connect(key, &QShortcut::activated, this, [this, k] { rate_next_open(k); });
     }
     add_next([this] {
-      nlohmann::json a = nlohmann::json::object();
-      for (const auto& [name, group] : scales_) a[name] = group->checkedId();
+      RatingAnswer a;
+      for (const auto& [name, group] : scales_) a.points[name] = group->checkedId();
       return a;
     });
   }

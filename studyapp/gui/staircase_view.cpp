@@ -1,12 +1,11 @@
 // Adaptive staircase (three intervals): each step plays the reference (the block's `reference`, default
 // the stimulus as defined), then A and B — one of them the reference again, the other the stimulus with
 // the tracked parameter at the track's level (rendered on a worker) — and asks which of A/B is the same
-// as the reference. Each answer is one Session step; the trial ends when the track does. The view shows the
-// steps and reversals so far of their maxima, and (with `feedback: true`) whether each answer was right.
-// Which interval holds the comparison is drawn from the session's seed.
+// as the reference. Which interval holds the comparison is the session's draw, and the session scores the
+// interval chosen: the view plays the intervals and reports the button pressed. Each answer is one Session
+// step; the trial ends when the track does. The view shows the steps and reversals so far of their maxima,
+// and (with `feedback: true`) whether each answer was right.
 #include <QTimer>
-
-#include <random>
 
 #include "studyapp/gui/async_render.hpp"
 #include "studyapp/gui/trial_view.hpp"
@@ -50,8 +49,7 @@ class StaircaseView : public TrialView {
     const bool live = controller_.has_session() && !controller_.previewing();
     const std::size_t step = live ? controller_.session().staircase().levels().size() : 0;
     const std::size_t reversals = live ? controller_.session().staircase().reversals() : 0;
-    std::mt19937_64 rng((live ? controller_.session().schedule().seed : 0) ^ (0x9e3779b97f4a7c15ULL * (step + 1)));
-    comparison_in_b_ = (rng() & 1U) != 0;
+    comparison_ = live ? controller_.session().staircase_comparison() : AbInterval::b;
     level_ = live ? controller_.session().staircase().level() : block_.start;
     comparison_ready_ = false;
     if (QAbstractButton* b = choices_->checkedButton()) {
@@ -72,8 +70,8 @@ class StaircaseView : public TrialView {
                    if (!error.empty()) return step_label_->setText(QString::fromStdString("cannot render: " + error));
                    const std::string name = block_.stimulus.name + "@" + override_text(block_.parameter, level_);
                    const Sound reference{reference_name_, reference_}, comparison{name, samples};
-                   controller_.set_sounds({reference, comparison_in_b_ ? reference : comparison,
-                                           comparison_in_b_ ? comparison : reference});
+                   const bool in_b = comparison_ == AbInterval::b;
+                   controller_.set_sounds({reference, in_b ? reference : comparison, in_b ? comparison : reference});
                    comparison_ready_ = true;
                    for (std::size_t i = 0; i < 3; ++i) play_button(i)->setEnabled(true);
                    refresh();
@@ -91,11 +89,11 @@ class StaircaseView : public TrialView {
     if (!gate().may_send) return;
     sequence_next_ = 0;
     controller_.stop();
-    const bool chose_b = choices_->checkedId() == 1;
-    const bool correct = chose_b != comparison_in_b_;  // the reference's copy is the one without the comparison
+    const AbInterval chosen = choices_->checkedId() == 1 ? AbInterval::b : AbInterval::a;
     const bool feedback = controller_.block().feedback;
-    if (!controller_.staircase_step(correct)) return;  // the track ended: the window shows the next trial
-    if (feedback) show_feedback(correct ? "Right." : "Not quite.", correct);
+    const StaircaseReply reply = controller_.staircase_step(chosen);
+    if (!reply.goes_on) return;  // the track ended: the window shows the next trial
+    if (feedback) show_feedback(reply.correct ? "Right." : "Not quite.", reply.correct);
     start_step();
   }
 
@@ -105,7 +103,8 @@ class StaircaseView : public TrialView {
   QButtonGroup* choices_ = nullptr;
   QLabel* step_label_ = nullptr;
   double level_ = 0.0;
-  bool comparison_in_b_ = false, comparison_ready_ = false;
+  AbInterval comparison_ = AbInterval::b;  // where the session put the comparison in this step
+  bool comparison_ready_ = false;
   int sequence_next_ = 0;
 };
 

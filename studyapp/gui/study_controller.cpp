@@ -190,23 +190,26 @@ bool StudyController::submit(const nlohmann::json& value) {
   return true;
 }
 
-bool StudyController::staircase_step(bool correct) {
+StaircaseReply StudyController::staircase_step(AbInterval chosen) {
   const std::size_t trial = session_->current_index();
+  StaircaseReply reply;
   try {
-    session_->staircase_step(correct, elapsed_ms(), now_ms());
+    reply.correct = session_->staircase_step(chosen, elapsed_ms(), now_ms());
   } catch (const std::exception& e) {
     emit error(QString::fromStdString(e.what()));
-    return true;
+    reply.goes_on = true;
+    return reply;
   }
   if (session_->current_index() == trial && !session_->finished()) {
     played_.clear();
     held_rt_ms_.reset();
     trial_clock_.start();
-    return true;
+    reply.goes_on = true;
+    return reply;
   }
   if (!session_->finished() && session_->at_break()) emit breakReached();
   else show_current();
-  return false;
+  return reply;
 }
 
 void StudyController::continue_after_break() { show_current(); }

@@ -28,6 +28,12 @@ struct Sound {
   std::string detail_json = {};  // logged with its play/switch/stop events (e.g. an adjust variant's slider values)
 };
 
+// A staircase step as the session took it: was the choice right, and does the track go on in this trial.
+struct StaircaseReply {
+  bool correct = false;
+  bool goes_on = false;
+};
+
 class StudyController : public QObject {
   Q_OBJECT
 
@@ -87,8 +93,8 @@ class StudyController : public QObject {
   // Commits the answer (Session::answer) before anything else is shown; false (and error signal) if
   // the session rejects it.
   bool submit(const nlohmann::json& value);
-  // Staircase: commits one step; true while the track goes on within the same trial.
-  bool staircase_step(bool correct);
+  // Staircase: commits the interval chosen in one step (the session scores it).
+  StaircaseReply staircase_step(AbInterval chosen);
   void continue_after_break();        // from the break page
 
  signals:

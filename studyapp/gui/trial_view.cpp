@@ -150,14 +150,14 @@ QButtonGroup* TrialView::add_choices(const QStringList& labels, const QStringLis
   return group;
 }
 
-void TrialView::add_next(std::function<nlohmann::json()> answer, const QString& text) {
+void TrialView::add_next(std::function<Answer()> answer, const QString& text) {
   add_next_action([this, answer = std::move(answer)] {
     if (awaiting_continue_) {
       controller_.submit(pending_answer_);
       return;
     }
     if (!gate().may_send) return;
-    nlohmann::json value = answer();
+    nlohmann::json value = answer();  // the typed answer's stored JSON
     const Block& block = controller_.block();
     if (block.feedback && controller_.has_session()) {
       if (const auto f = training_feedback(controller_.protocol(), block, controller_.trial(), value)) {

@@ -20,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include "studyapp/core/answer_gate.hpp"
+#include "studyapp/core/answers.hpp"
 #include "studyapp/gui/study_controller.hpp"
 
 namespace ms::gui {
@@ -43,8 +44,8 @@ class TrialView : public QWidget {
   void press_play(std::size_t index, bool seamless);
   // Exclusive checkable buttons (objectName "choice-<name>"), keys 1..n select.
   QButtonGroup* add_choices(const QStringList& labels, const QStringList& names, QBoxLayout* into = nullptr);
-  // The Next button (objectName "next", Enter/Return) committing answer().
-  void add_next(std::function<nlohmann::json()> answer, const QString& text = "Next");
+  // The Next button (objectName "next", Enter/Return) committing answer() (stored as its JSON).
+  void add_next(std::function<Answer()> answer, const QString& text = "Next");
   void add_next_action(std::function<void()> on_next, const QString& text);  // the same button, own action
   void refresh();                                   // re-derive Next, the hint and the play buttons
   // What the participant did, for answer_gate. By default: one heard flag per sound of the controller.

@@ -2,6 +2,8 @@
 // and one block of each answered kind), and simulated participants run into a store and exported.
 #pragma once
 #include <cstdint>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "studyapp/core/autopilot.hpp"
@@ -9,6 +11,14 @@
 #include "support/test_util.hpp"
 
 namespace ms::testing {
+
+// A file's whole text (a protocol's, for a Session).
+inline std::string file_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
 
 inline std::string write_small_study(const test::TempDir& dir, const std::string& extra_blocks = "") {
   dir.write("sets/low.yaml",

@@ -127,6 +127,11 @@ TEST(Session, AChangedProtocolIsRefusedForTheSameDatabase) {
   }
 }
 
+// The interval that scores as `correct` in the session's current staircase step.
+AbInterval choice_scoring(Session& s, bool correct) {
+  return correct ? other(s.staircase_comparison()) : s.staircase_comparison();
+}
+
 TEST(Session, StaircaseStepsAreCommittedAndATrackResumes) {
   test::TempDir dir;
   const std::string path = testing::write_small_study(
@@ -139,7 +144,7 @@ TEST(Session, StaircaseStepsAreCommittedAndATrackResumes) {
   {
     Session s(p, slurp(path), "P04", dir.file("r.sqlite"), cache.hashes(), 1000);
     while (s.current().type != BlockType::staircase) s.answer(good_answer(s), 1.0, 1, 1000);
-    for (; used < 5; ++used) s.staircase_step(pattern[used], 300.0, 2000);
+    for (; used < 5; ++used) s.staircase_step(choice_scoring(s, pattern[used]), 300.0, 2000);
     EXPECT_EQ(s.staircase().levels().size(), 5u);
   }
   Session s(p, slurp(path), "P04", dir.file("r.sqlite"), cache.hashes(), 3000);
@@ -149,7 +154,7 @@ TEST(Session, StaircaseStepsAreCommittedAndATrackResumes) {
   StaircaseTrack replay(0.2, 0.05, 2, 1, 4);
   for (std::size_t i = 0; i < 5; ++i) replay.record(pattern[i]);
   EXPECT_DOUBLE_EQ(s.staircase().level(), replay.level());
-  while (!s.finished()) s.staircase_step(pattern[used++ % 14], 300.0, 4000);
+  while (!s.finished()) s.staircase_step(choice_scoring(s, pattern[used++ % 14]), 300.0, 4000);
   const auto r = s.store().response(s.id(), {3, 0});
   ASSERT_TRUE(r.has_value());
   const auto v = nlohmann::json::parse(r->value_json);

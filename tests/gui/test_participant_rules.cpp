@@ -7,6 +7,7 @@
 #include <QLabel>
 #include <QRadioButton>
 
+#include <algorithm>
 #include <fstream>
 
 #include "gui_fixture.hpp"
@@ -254,6 +255,37 @@ TEST(ParticipantRules, StaircaseShowsItsProgressAndItsButtonIsNext) {
   QTest::mouseClick(child<QPushButton>(v, "choice-A"), Qt::LeftButton);
   QTest::mouseClick(next_of(w), Qt::LeftButton);
   EXPECT_TRUE(child<QLabel>(v, "step")->text().startsWith("Step 2 of at most 80"));
+}
+
+// The view plays the comparison where the session's draw put it and reports the button pressed; the
+// session scores it and stores the interval chosen.
+TEST(ParticipantRules, StaircaseViewReportsTheButtonAndTheSessionScoresIt) {
+  const std::string dir = fresh_dir("rules-staircase-choice");
+  ms::gui::MainWindow w(options_for(
+      write_protocol(dir, "  - {type: staircase, stimulus: metal, parameter: duration_s, start: 0.6, step: 0.2, "
+                          "reversals: 3}\n"),
+      dir, "R11"));
+  ASSERT_TRUE(start_window(w));
+  ms::Session& session = w.controller()->session();
+  for (const bool right : {true, false}) {
+    QWidget* v = w.trial_view();
+    ASSERT_TRUE(wait_until([&] { return child<QPushButton>(v, "play-0")->isEnabled(); }));
+    const ms::AbInterval comparison = session.staircase_comparison();
+    const std::size_t in = comparison == ms::AbInterval::a ? 1 : 2;  // sounds: reference, A, B
+    EXPECT_NE(w.controller()->sounds()[in].name.find('@'), std::string::npos) << w.controller()->sounds()[in].name;
+    EXPECT_EQ(w.controller()->sounds()[3 - in].name.find('@'), std::string::npos);
+    for (int i = 0; i < 3; ++i) QTest::mouseClick(child<QPushButton>(v, QString("play-%1").arg(i)), Qt::LeftButton);
+    const ms::AbInterval chosen = right ? ms::other(comparison) : comparison;
+    QTest::mouseClick(child<QPushButton>(v, QString::fromStdString("choice-" + to_string(chosen))), Qt::LeftButton);
+    QTest::mouseClick(next_of(w), Qt::LeftButton);
+    const auto events = session.store().event_rows();
+    const auto step = std::find_if(events.rbegin(), events.rend(), [](const auto& e) { return e.kind == "step"; });
+    ASSERT_NE(step, events.rend());
+    const auto d = nlohmann::json::parse(step->detail_json);
+    EXPECT_EQ(d["chosen"], to_string(chosen));
+    EXPECT_EQ(d["comparison"], to_string(comparison));
+    EXPECT_EQ(d["correct"], right);
+  }
 }
 
 TEST(ParticipantRules, ResumeNoticeIsGoneAfterTheFirstTrial) {

@@ -1,0 +1,105 @@
+// One typed answer per block type, and its JSON as stored in the results store (the response value):
+//   instructions   "ok"
+//   ab             same_different: "same" | "different"; preference, abx, 2afc: "A" | "B" (abx: the one
+//                  that is X); bipolar: integer -3..3 (B compared with A; with a block reference:
+//                  positive when B is closer to the reference)
+//   mushra         {"<stimulus>": 0..100, ...} for every stimulus of the trial (hidden reference too)
+//   magnitude      number > 0 (the pair's dissimilarity, the modulus pair being the block's
+//                  modulus_value); >= 0 with identical pairs
+//   identify       one of the block's labels
+//   rating         {"<attribute>": 1..points, ...} for every attribute
+//   adjust         {"<key>": value within the slider's range, ...} for every slider
+//   staircase      {"parameter": key, "levels": [...], "correct": [...], "chosen": ["A"|"B", ...],
+//                  "threshold": number|null}; answers stored before the choice was kept have no "chosen"
+//   questionnaire  {"<question id>": "text or option", ...}
+// The views, the simulated listener and the session write answers through these types; the export, the
+// experimenter view's pictures and the check before storing (response_format.hpp) read them back.
+#pragma once
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "studyapp/core/protocol.hpp"
+#include "studyapp/core/schedule.hpp"
+
+namespace ms {
+
+// Why a JSON value is not an answer to its trial (one line).
+struct AnswerError : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+// One of a trial's two sounds, A (played first) or B; stored as "A" / "B".
+enum class AbInterval { a, b };
+std::string to_string(AbInterval i);
+AbInterval other(AbInterval i);
+
+struct InstructionsAnswer {};
+struct SameDifferentAnswer { bool different = false; };
+struct ChoiceAnswer { AbInterval chosen = AbInterval::a; };  // preference, ABX, 2AFC
+struct BipolarAnswer { int score = 0; };                // -3..3
+struct MushraAnswer { std::map<std::string, double> scores; };  // stimulus -> 0..100
+struct MagnitudeAnswer { double value = 0.0; };
+struct IdentifyAnswer { std::string label; };
+struct RatingAnswer { std::map<std::string, int> points; };     // attribute -> 1..points
+struct AdjustAnswer { std::map<std::string, double> values; };  // parameter-set key -> value
+// A whole staircase track: per step the level presented, the interval the listener chose and whether
+// that was right (the other interval held the comparison), and the track's threshold.
+struct StaircaseAnswer {
+  std::string parameter;
+  std::vector<double> levels;
+  std::vector<bool> correct;
+  std::vector<AbInterval> chosen;  // one per step, or empty (stored before choices were kept)
+  std::optional<double> threshold;
+};
+struct QuestionnaireAnswer { std::map<std::string, std::string> answers; };  // question id -> text
+
+using Answer = std::variant<InstructionsAnswer, SameDifferentAnswer, ChoiceAnswer, BipolarAnswer, MushraAnswer,
+                            MagnitudeAnswer, IdentifyAnswer, RatingAnswer, AdjustAnswer, StaircaseAnswer,
+                            QuestionnaireAnswer>;
+
+// The stored JSON of each type (nlohmann's to_json/from_json; from_json throws AnswerError).
+void to_json(nlohmann::json& j, const InstructionsAnswer& a);
+void to_json(nlohmann::json& j, const SameDifferentAnswer& a);
+void to_json(nlohmann::json& j, const ChoiceAnswer& a);
+void to_json(nlohmann::json& j, const BipolarAnswer& a);
+void to_json(nlohmann::json& j, const MushraAnswer& a);
+void to_json(nlohmann::json& j, const MagnitudeAnswer& a);
+void to_json(nlohmann::json& j, const IdentifyAnswer& a);
+void to_json(nlohmann::json& j, const RatingAnswer& a);
+void to_json(nlohmann::json& j, const AdjustAnswer& a);
+void to_json(nlohmann::json& j, const StaircaseAnswer& a);
+void to_json(nlohmann::json& j, const QuestionnaireAnswer& a);
+void to_json(nlohmann::json& j, const Answer& a);
+void from_json(const nlohmann::json& j, InstructionsAnswer& a);
+void from_json(const nlohmann::json& j, SameDifferentAnswer& a);
+void from_json(const nlohmann::json& j, ChoiceAnswer& a);
+void from_json(const nlohmann::json& j, BipolarAnswer& a);
+void from_json(const nlohmann::json& j, MushraAnswer& a);
+void from_json(const nlohmann::json& j, MagnitudeAnswer& a);
+void from_json(const nlohmann::json& j, IdentifyAnswer& a);
+void from_json(const nlohmann::json& j, RatingAnswer& a);
+void from_json(const nlohmann::json& j, AdjustAnswer& a);
+void from_json(const nlohmann::json& j, StaircaseAnswer& a);
+void from_json(const nlohmann::json& j, QuestionnaireAnswer& a);
+
+// A MUSHRA score as stored: a whole score (the slider's) as an integer, else the number.
+nlohmann::json mushra_score_json(double score);
+
+// A stored answer of a block type ("ab", "mushra", ... as the store names it) read by its shape alone
+// (an A/B answer's mode from its value), for readers without the protocol. Throws AnswerError.
+Answer read_stored_answer(const std::string& block_type, const nlohmann::json& value);
+
+// `value` as an answer to `trial` of `block`: its shape for the block type (and A/B mode), and that it
+// fits the block and trial (labels, keys, ranges). Throws AnswerError saying why not.
+Answer read_answer(const Block& block, const Trial& trial, const nlohmann::json& value);
+
+// Question id of a questionnaire item (written id, or "q<n>" 1-based).
+std::string question_id(const Question& q, std::size_t index);
+
+}  // namespace ms
