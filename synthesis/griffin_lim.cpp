@@ -22,7 +22,7 @@ double unit_uniform(std::mt19937_64& rng) { return double(rng() >> 11) * 0x1.0p-
 // c <- |S| c / |c|, the nearest spectrogram with the target magnitude.
 void impose_magnitude(const std::vector<double>& magnitude, std::vector<C>& c) {
   for (std::size_t i = 0; i < c.size(); ++i) {
-    const double a = std::abs(c[i]);
+    const double a = std::sqrt(std::norm(c[i]));  // not std::abs: hypot's care for overflow costs here
     c[i] = a > 1e-300 ? c[i] * (magnitude[i] / a) : C(magnitude[i], 0.0);
   }
 }

@@ -37,9 +37,13 @@ void Stft::forward(const double* x, std::size_t samples, std::complex<double>* s
   for (std::size_t m = 0; m < frames; ++m) {
     const long long s = frame_start(grid_, m);
     double* in = fft_.real();
-    for (std::size_t j = 0; j < n; ++j) {
-      const long long i = s + (long long)j;
-      in[j] = i >= 0 && i < (long long)samples ? window_[j] * x[i] : 0.0;
+    if (s >= 0 && s + (long long)n <= (long long)samples) {
+      for (std::size_t j = 0; j < n; ++j) in[j] = window_[j] * x[s + (long long)j];
+    } else {
+      for (std::size_t j = 0; j < n; ++j) {
+        const long long i = s + (long long)j;
+        in[j] = i >= 0 && i < (long long)samples ? window_[j] * x[i] : 0.0;
+      }
     }
     fft_.forward();
     std::copy(fft_.spectrum(), fft_.spectrum() + bins, spectra + m * bins);
@@ -64,9 +68,14 @@ void Stft::inverse(const std::complex<double>* spectra, std::size_t samples, dou
     fft_.backward();
     const long long s = frame_start(grid_, m);
     const double* y = fft_.real();
-    for (std::size_t j = 0; j < n; ++j)
-      if (const long long i = s + (long long)j; i >= 0 && i < (long long)samples)
-        x[i] += window_[j] * y[j] * scale;
+    if (s >= 0 && s + (long long)n <= (long long)samples) {
+      double* out = x + s;
+      for (std::size_t j = 0; j < n; ++j) out[j] += window_[j] * y[j] * scale;
+    } else {
+      for (std::size_t j = 0; j < n; ++j)
+        if (const long long i = s + (long long)j; i >= 0 && i < (long long)samples)
+          x[i] += window_[j] * y[j] * scale;
+    }
   }
   for (std::size_t i = 0; i < samples; ++i)
     x[i] = window_square_sum_[i] > 1e-12 ? x[i] / window_square_sum_[i] : 0.0;
@@ -95,35 +104,44 @@ void damped_sine_power(const Mode& mode, double fs, const StftGrid& grid, std::s
   // Periodic Hann: w_j = sum_q w_q e^{i 2 pi q j / N}.
   constexpr int kQ[3] = {-1, 0, 1};
   constexpr double kWq[3] = {-0.25, 0.5, -0.25};
+  C pole[2], pole_n[2];
+  for (int c = 0; c < 2; ++c) {
+    pole[c] = std::exp(log_pole[c]);
+    pole_n[c] = std::exp(n * log_pole[c]);
+  }
+  // sum_{j=j0}^{N-1} r^j with r = pole e^{i turn}, turn = 2 pi (q - k) / N; r^N = pole^N because
+  // turn N is a whole number of turns.
+  const auto geometric = [&](int c, double turn, long long j0) {
+    const C r = pole[c] * std::polar(1.0, turn);
+    if (std::abs(1.0 - r) <= 1e-12) return C(n - double(j0), 0.0);  // undamped and on the bin
+    const C r_j0 = j0 == 0 ? C(1.0, 0.0) : std::exp(double(j0) * log_pole[c]) * std::polar(1.0, turn * double(j0));
+    return (r_j0 - pole_n[c]) / (1.0 - r);
+  };
+  // Frames wholly after the strike (j0 = 0) differ only by the factor pole^s: their window sums per
+  // bin are computed once.
   const std::size_t width = bin_end - bin_begin;
+  std::vector<C> whole(2 * width);
+  for (std::size_t k = bin_begin; k < bin_end; ++k)
+    for (int c = 0; c < 2; ++c) {
+      C sum(0.0, 0.0);
+      for (int qi = 0; qi < 3; ++qi) sum += kWq[qi] * geometric(c, kTwoPi * double(kQ[qi] - (long long)k) / n, 0);
+      whole[2 * (k - bin_begin) + c] = sum;
+    }
   for (std::size_t m = frame_begin; m < frame_end; ++m) {
     const long long s = frame_start(grid, m);
     const long long j0 = std::max(0LL, -s);  // first window sample at or after the strike
-    C start[2], pole_j0[2], pole_n[2], pole[2];
-    for (int c = 0; c < 2; ++c) {
-      start[c] = coef[c] * std::exp(double(s) * log_pole[c]);
-      pole_j0[c] = std::exp(double(j0) * log_pole[c]);
-      pole_n[c] = std::exp(n * log_pole[c]);
-      pole[c] = std::exp(log_pole[c]);
-    }
+    const C start[2] = {coef[0] * std::exp(double(s) * log_pole[0]), coef[1] * std::exp(double(s) * log_pole[1])};
+    double* row = out + (m - frame_begin) * width;
     for (std::size_t k = bin_begin; k < bin_end; ++k) {
       C x(0.0, 0.0);
-      for (int qi = 0; qi < 3; ++qi) {
-        const double turn = kTwoPi * double(kQ[qi] - (long long)k) / n;
-        const C rotation = std::polar(1.0, turn), rotation_j0 = std::polar(1.0, turn * double(j0));
-        for (int c = 0; c < 2; ++c) {
-          // sum_{j=j0}^{N-1} r^j with r = pole e^{i turn}; r^N = pole^N because turn N is a whole turn.
-          const C r = pole[c] * rotation;
-          C geometric;
-          if (std::abs(1.0 - r) > 1e-12) {
-            geometric = (pole_j0[c] * rotation_j0 - pole_n[c]) / (1.0 - r);
-          } else {
-            geometric = C(double(grid.fft_size) - double(j0), 0.0);
-          }
-          x += kWq[qi] * start[c] * geometric;
-        }
+      if (j0 == 0) {
+        x = start[0] * whole[2 * (k - bin_begin)] + start[1] * whole[2 * (k - bin_begin) + 1];
+      } else {
+        for (int qi = 0; qi < 3; ++qi)
+          for (int c = 0; c < 2; ++c)
+            x += kWq[qi] * start[c] * geometric(c, kTwoPi * double(kQ[qi] - (long long)k) / n, j0);
       }
-      out[(m - frame_begin) * width + (k - bin_begin)] = std::norm(x);
+      row[k - bin_begin] = std::norm(x);
     }
   }
 }

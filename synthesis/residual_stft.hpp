@@ -50,7 +50,8 @@ class Stft {
 
 // The power |X_m[k]|^2 of x[n] = amp e^{-d n/fs} sin(2 pi f n/fs + phase) (n >= 0, 0 before) on
 // `grid`, in closed form: the Hann window is three complex exponentials and each frame's sum a
-// geometric series, so a pixel costs a few complex divisions and no transform. Writes the frames
+// geometric series; frames after the strike's differ only by a factor, so a pixel costs two complex
+// products and no transform. Writes the frames
 // [frame_begin, frame_end) x bins [bin_begin, bin_end) row by row into out.
 void damped_sine_power(const Mode& mode, double sample_rate_hz, const StftGrid& grid, std::size_t frame_begin,
                        std::size_t frame_end, std::size_t bin_begin, std::size_t bin_end, double* out);

@@ -48,6 +48,7 @@ TEST(GriffinLim, ReachesMinus20dBInTheDefaultIterations) {
     const GriffinLimResult r = griffin_lim(target, grid, x.size(), options);
     ASSERT_EQ(r.samples.size(), x.size());
     EXPECT_LE(r.spectral_convergence_db, -20.0) << seed;
+    RecordProperty("spectral_convergence_db_seed_" + std::to_string(seed), std::to_string(r.spectral_convergence_db));
     // The reported figure is the returned samples' own.
     EXPECT_NEAR(spectral_convergence_db(r.samples, target, grid), r.spectral_convergence_db, 0.05);
     // Energy is kept: the rebuilt sound is as loud as the original within 0.5 dB.
@@ -69,6 +70,8 @@ TEST(GriffinLim, MomentumConvergesFurtherThanTheOriginal) {
   const double plain = griffin_lim(target, grid, x.size(), original).spectral_convergence_db;
   const double fast = griffin_lim(target, grid, x.size(), {}).spectral_convergence_db;
   EXPECT_LT(fast, plain - 3.0) << "plain " << plain << " dB, fast " << fast << " dB";
+  RecordProperty("plain_db", std::to_string(plain));
+  RecordProperty("fast_db", std::to_string(fast));
 }
 
 TEST(GriffinLim, OneSeedOneSignal) {

@@ -107,6 +107,7 @@ TEST(ResidualTransfer, ToTheSameObjectThroughGriffinLim) {
   r.frames = r.grid.frames_for(burst.size());
   const GriffinLimResult out = render_transferred_residual(r, modes, kFs, burst.size());
   EXPECT_LE(out.spectral_convergence_db, -20.0);
+  RecordProperty("spectral_convergence_db", std::to_string(out.spectral_convergence_db));
   EXPECT_LE(spectral_convergence_db(out.samples, r.power, r.grid), -20.0);
   const GriffinLimResult again = render_transferred_residual(r, modes, kFs, burst.size());
   EXPECT_EQ(out.samples, again.samples);
