@@ -58,6 +58,7 @@ GriffinLimResult griffin_lim(const std::vector<float>& power, const StftGrid& gr
                              const GriffinLimOptions& options) {
   const std::vector<double> magnitude = magnitudes(power, grid, samples);
   Stft stft(grid);
+  stft.prepare_inverse(samples);
   std::vector<C> c(magnitude.size()), t(magnitude.size()), t_previous(magnitude.size());
   std::vector<double> x(samples);
   std::mt19937_64 rng(options.seed);

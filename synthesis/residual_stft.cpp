@@ -50,17 +50,20 @@ void Stft::forward(const double* x, std::size_t samples, std::complex<double>* s
   }
 }
 
+void Stft::prepare_inverse(std::size_t samples) {
+  if (window_square_sum_.size() == samples) return;
+  window_square_sum_.assign(samples, 0.0);
+  for (std::size_t m = 0; m < grid_.frames_for(samples); ++m) {
+    const long long s = frame_start(grid_, m);
+    for (std::size_t j = 0; j < grid_.fft_size; ++j)
+      if (const long long i = s + (long long)j; i >= 0 && i < (long long)samples)
+        window_square_sum_[i] += window_[j] * window_[j];
+  }
+}
+
 void Stft::inverse(const std::complex<double>* spectra, std::size_t samples, double* x) {
   const std::size_t n = grid_.fft_size, bins = grid_.bins(), frames = grid_.frames_for(samples);
-  if (window_square_sum_.size() != samples) {
-    window_square_sum_.assign(samples, 0.0);
-    for (std::size_t m = 0; m < frames; ++m) {
-      const long long s = frame_start(grid_, m);
-      for (std::size_t j = 0; j < n; ++j)
-        if (const long long i = s + (long long)j; i >= 0 && i < (long long)samples)
-          window_square_sum_[i] += window_[j] * window_[j];
-    }
-  }
+  prepare_inverse(samples);
   std::fill(x, x + samples, 0.0);
   const double scale = 1.0 / double(n);  // FFTW's c2r returns n times the inverse DFT
   for (std::size_t m = 0; m < frames; ++m) {

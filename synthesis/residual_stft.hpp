@@ -37,6 +37,9 @@ class Stft {
   // x = sum_m w y_m / sum_m w^2 (y_m the inverse transform of frame m), the signal whose STFT is
   // nearest `spectra` in the least-squares sense; frames must equal frames_for(samples).
   void inverse(const std::complex<double>* spectra, std::size_t samples, double* x);
+  // Makes inverse()'s overlap normalisation for this signal length now (it is otherwise made, once,
+  // by the first inverse() of that length), so that a loop of inverses allocates nothing.
+  void prepare_inverse(std::size_t samples);
 
   // Power spectrogram of x: frames_for(x.size()) x bins, frame-major.
   std::vector<double> power(const std::vector<float>& x);
