@@ -61,7 +61,7 @@ MaterialEstimate estimate_material(const std::vector<float>& recording, double s
   std::vector<double> weights;
   for (const FeaturePoint& p : ref.features()) weights.push_back(p.weight);
   const std::vector<StartPoint> starts =
-      start_points(modes, weights, object.lambda0, object.gain, options.dominant_modes);
+      start_points(modes, weights, object.lambda0, object.gain, options.dominant_modes, options.start_eigenvalues);
   if (starts.empty()) throw std::invalid_argument("no start point (fewer than two usable modes in the recording)");
 
   const Problem problem{ref, object, excitation, sample_rate_hz, frames};
@@ -76,6 +76,7 @@ MaterialEstimate estimate_material(const std::vector<float>& recording, double s
   ranked.resize(std::min(ranked.size(), options.max_starts));
 
   MaterialEstimate out;
+  out.frames = frames;
   double best = HUGE_VAL;
   for (const auto& [value, i] : ranked) {
     StartResult s;

@@ -15,6 +15,7 @@ namespace ms {
 struct EstimateOptions {
   PerceptualOptions perceptual;
   std::size_t dominant_modes = 5;        // reference modes the start points are built from
+  StartEigenvalues start_eigenvalues = StartEigenvalues::every;  // what the dominant mode is mapped onto
   std::size_t max_starts = 6;            // local searches run, from the start points of lowest metric
   std::size_t max_evaluations = 250;     // per local search
   double max_duration_s = 2.0;           // the recording's image is compared over at most this long
@@ -33,6 +34,7 @@ struct MaterialEstimate {
   std::vector<StartResult> starts;  // every local search, in the order run
   std::size_t iterations = 0;       // summed over the starts
   std::size_t matched_modes = 0;    // recording modes with a positive match score against the estimate
+  std::size_t frames = 0;           // samples of the recording compared (from its onset)
 };
 
 // recording: mono samples from the onset; modes: its extracted modes (amplitudes at the onset).

@@ -64,8 +64,9 @@ std::vector<std::size_t> pareto_eigenvalues(const std::vector<double>& lambda0, 
 
 std::vector<StartPoint> start_points(const std::vector<Mode>& modes, const std::vector<double>& weights,
                                      const std::vector<double>& lambda0, const std::vector<double>& excitation,
-                                     std::size_t dominant) {
+                                     std::size_t dominant, StartEigenvalues onto) {
   if (weights.size() != modes.size()) throw std::invalid_argument("start_points: one weight per mode");
+  if (lambda0.size() != excitation.size()) throw std::invalid_argument("start_points: one excitation per eigenvalue");
   std::vector<std::size_t> rank(modes.size());
   std::iota(rank.begin(), rank.end(), 0);
   std::stable_sort(rank.begin(), rank.end(), [&](std::size_t i, std::size_t j) { return weights[i] > weights[j]; });
@@ -73,7 +74,15 @@ std::vector<StartPoint> start_points(const std::vector<Mode>& modes, const std::
   std::vector<StartPoint> starts;
   if (rank.empty()) return starts;
   const Mode& top = modes[rank.front()];
-  const std::vector<std::size_t> front = pareto_eigenvalues(lambda0, excitation);
+  std::vector<std::size_t> front;
+  if (onto == StartEigenvalues::pareto) {
+    front = pareto_eigenvalues(lambda0, excitation);
+  } else {
+    for (std::size_t e = 0; e < lambda0.size(); ++e) {
+      const bool repeated = std::any_of(front.begin(), front.end(), [&](std::size_t k) { return lambda0[k] == lambda0[e]; });
+      if (excitation[e] != 0.0 && !repeated) front.push_back(e);
+    }
+  }
   for (std::size_t p = 0; p < rank.size(); ++p)
     for (std::size_t q = p + 1; q < rank.size(); ++q) {
       const auto circle = rayleigh_circle_through(modes[rank[p]], modes[rank[q]]);

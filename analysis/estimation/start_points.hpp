@@ -41,11 +41,18 @@ struct StartPoint {
   std::size_t eigenvalue = 0;          // the eigenvalue (index into lambda0) mapped onto the dominant mode
 };
 
+// Which eigenvalues the most dominant mode is mapped onto: the Pareto set (the patent), or every
+// eigenvalue with a non-zero excitation (equal eigenvalues once). The loudest mode of a recording
+// need not lie on the excitation's Pareto set: the ear's weighting and the damping reorder the modes
+// (a bar struck near its end excites its fundamental most, yet a plastic bar's loudest mode is its
+// fifth), and then no Pareto start has the right gamma.
+enum class StartEigenvalues { pareto, every };
+
 // All starting points from the `dominant` reference modes of largest weight (weights: one per mode,
 // e.g. the loudness weights of perceptual_metric.hpp) and the object's eigenvalues lambda0 with their
 // excitations for the struck point. The most dominant mode is the one of largest weight.
 std::vector<StartPoint> start_points(const std::vector<Mode>& modes, const std::vector<double>& weights,
                                      const std::vector<double>& lambda0, const std::vector<double>& excitation,
-                                     std::size_t dominant = 5);
+                                     std::size_t dominant = 5, StartEigenvalues onto = StartEigenvalues::pareto);
 
 }  // namespace ms

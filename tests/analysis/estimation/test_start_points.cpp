@@ -4,6 +4,7 @@
 // reproduces the true {alpha, beta, gamma/gamma0, sigma} when the right eigenvalue meets the dominant mode.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -115,6 +116,22 @@ TEST(StartPoints, OneStartIsTheTrueMaterial) {
     }
   }
   EXPECT_TRUE(found);
+  // Mapped onto every eigenvalue: the same 3 circles times the 5 distinct eigenvalues.
+  EXPECT_EQ(start_points(m, weights, l0, kGains, 3, StartEigenvalues::every).size(), 3u * 5u);
   EXPECT_TRUE(start_points({}, {}, l0, kGains).empty());
   EXPECT_THROW(start_points(m, {1.0}, l0, kGains), std::invalid_argument);
+}
+
+TEST(StartPoints, ADominantModeOffTheParetoSetGetsItsTrueStartOnlyFromEveryEigenvalue) {
+  const std::vector<Mode> m = true_modes();
+  const std::vector<double> l0 = eigenvalues();
+  // Mode 3 (gain 0.8, below mode 1's 1.0 at a smaller eigenvalue) is the most dominant.
+  const std::vector<double> weights = {3.0, 2.0, 1.0, 10.0, 0.5};
+  auto has_truth = [&](const std::vector<StartPoint>& starts) {
+    return std::any_of(starts.begin(), starts.end(), [](const StartPoint& s) {
+      return s.eigenvalue == 3 && std::abs(s.stiffness_ratio / kRatio - 1.0) < 1e-9;
+    });
+  };
+  EXPECT_FALSE(has_truth(start_points(m, weights, l0, kGains, 3, StartEigenvalues::pareto)));
+  EXPECT_TRUE(has_truth(start_points(m, weights, l0, kGains, 3, StartEigenvalues::every)));
 }
