@@ -19,20 +19,11 @@
 namespace ms {
 
 SampleFormat parse_sample_format(const std::string& name) {
-  if (name == "float32") return SampleFormat::float32;
-  if (name == "pcm24") return SampleFormat::pcm24;
-  if (name == "pcm16") return SampleFormat::pcm16;
-  throw std::invalid_argument("unknown sample format '" + name + "' (expected float32, pcm24 or pcm16)");
+  if (const auto format = find_enum(kSampleFormatNames, name)) return *format;
+  throw std::invalid_argument(unknown_name_problem("sample format", name, kSampleFormatNames));
 }
 
-std::string to_string(SampleFormat format) {
-  switch (format) {
-    case SampleFormat::float32: return "float32";
-    case SampleFormat::pcm24: return "pcm24";
-    case SampleFormat::pcm16: return "pcm16";
-  }
-  return "?";
-}
+std::string to_string(SampleFormat format) { return std::string(enum_name(kSampleFormatNames, format)); }
 
 namespace {
 

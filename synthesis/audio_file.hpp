@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "synthesis/name_table.hpp"
+
 namespace ms {
 
 struct Audio {
@@ -14,6 +16,8 @@ struct Audio {
 };
 
 enum class SampleFormat { float32, pcm24, pcm16 };
+inline constexpr NameTable<SampleFormat, 3> kSampleFormatNames{
+    {{SampleFormat::float32, "float32"}, {SampleFormat::pcm24, "pcm24"}, {SampleFormat::pcm16, "pcm16"}}};
 
 SampleFormat parse_sample_format(const std::string& name);  // "float32" | "pcm24" | "pcm16"
 std::string to_string(SampleFormat format);

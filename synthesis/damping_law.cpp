@@ -18,23 +18,11 @@ double DampingLaw::decay_per_s(double lambda) const {
 }
 
 DampingKind parse_damping_kind(const std::string& name) {
-  if (name == "rayleigh") return DampingKind::rayleigh;
-  if (name == "powerlaw") return DampingKind::powerlaw;
-  if (name == "hybrid") return DampingKind::hybrid;
-  if (name == "constant_q") return DampingKind::constant_q;
-  throw std::invalid_argument("unknown damping law '" + name +
-                              "' (expected rayleigh, powerlaw, hybrid or constant_q)");
+  if (const auto kind = find_enum(kDampingKindNames, name)) return *kind;
+  throw std::invalid_argument(unknown_name_problem("damping law", name, kDampingKindNames));
 }
 
-std::string to_string(DampingKind kind) {
-  switch (kind) {
-    case DampingKind::rayleigh: return "rayleigh";
-    case DampingKind::powerlaw: return "powerlaw";
-    case DampingKind::hybrid: return "hybrid";
-    case DampingKind::constant_q: return "constant_q";
-  }
-  return "?";
-}
+std::string to_string(DampingKind kind) { return std::string(enum_name(kDampingKindNames, kind)); }
 
 ModalModel modes_from_eigenvalues(const std::vector<double>& lambda0, const DampingLaw& law,
                                   double stiffness_ratio, double amp_scale,

@@ -11,10 +11,15 @@
 #include <vector>
 
 #include "synthesis/modal_model.hpp"
+#include "synthesis/name_table.hpp"
 
 namespace ms {
 
 enum class DampingKind { rayleigh, powerlaw, hybrid, constant_q };
+inline constexpr NameTable<DampingKind, 4> kDampingKindNames{{{DampingKind::rayleigh, "rayleigh"},
+                                                               {DampingKind::powerlaw, "powerlaw"},
+                                                               {DampingKind::hybrid, "hybrid"},
+                                                               {DampingKind::constant_q, "constant_q"}}};
 
 struct DampingLaw {
   DampingKind kind = DampingKind::rayleigh;

@@ -29,21 +29,11 @@ double Excitation::force(double t) const {
 }
 
 PulseShape parse_pulse_shape(const std::string& name) {
-  if (name == "impulse") return PulseShape::impulse;
-  if (name == "raised_cosine") return PulseShape::raised_cosine;
-  if (name == "hertz") return PulseShape::hertz;
-  throw std::invalid_argument("unknown excitation type '" + name +
-                              "' (expected impulse, raised_cosine or hertz)");
+  if (const auto shape = find_enum(kPulseShapeNames, name)) return *shape;
+  throw std::invalid_argument(unknown_name_problem("excitation type", name, kPulseShapeNames));
 }
 
-std::string to_string(PulseShape shape) {
-  switch (shape) {
-    case PulseShape::impulse: return "impulse";
-    case PulseShape::raised_cosine: return "raised_cosine";
-    case PulseShape::hertz: return "hertz";
-  }
-  return "?";
-}
+std::string to_string(PulseShape shape) { return std::string(enum_name(kPulseShapeNames, shape)); }
 
 std::complex<double> contact_integral(const Excitation& e, std::complex<double> p, double t) {
   if (e.shape == PulseShape::impulse || e.contact_s <= 0.0) return t >= 0.0 ? 1.0 : 0.0;

@@ -6,9 +6,13 @@
 #include <complex>
 #include <string>
 
+#include "synthesis/name_table.hpp"
+
 namespace ms {
 
 enum class PulseShape { impulse, raised_cosine, hertz };
+inline constexpr NameTable<PulseShape, 3> kPulseShapeNames{
+    {{PulseShape::impulse, "impulse"}, {PulseShape::raised_cosine, "raised_cosine"}, {PulseShape::hertz, "hertz"}}};
 
 struct Excitation {
   PulseShape shape = PulseShape::impulse;

@@ -221,46 +221,14 @@ PruneError::PruneError(std::string field, std::size_t mode, std::string problem)
       mode_(mode),
       problem_(std::move(problem)) {}
 
-std::optional<PruneMethod> parse_prune_method(std::string_view name) {
-  for (PruneMethod m : {PruneMethod::masking, PruneMethod::naive, PruneMethod::energy, PruneMethod::loudness})
-    if (to_string(m) == name) return m;
-  return std::nullopt;
-}
-
-std::optional<ModeOrder> parse_mode_order(std::string_view name) {
-  for (ModeOrder o : {ModeOrder::naive, ModeOrder::energy, ModeOrder::loudness})
-    if (to_string(o) == name) return o;
-  return std::nullopt;
-}
-
+std::optional<PruneMethod> parse_prune_method(std::string_view name) { return find_enum(kPruneMethodNames, name); }
+std::optional<ModeOrder> parse_mode_order(std::string_view name) { return find_enum(kModeOrderNames, name); }
 std::optional<MaskingCombine> parse_masking_combine(std::string_view name) {
-  for (MaskingCombine c : {MaskingCombine::max, MaskingCombine::sum})
-    if (to_string(c) == name) return c;
-  return std::nullopt;
+  return find_enum(kMaskingCombineNames, name);
 }
-
-std::string_view to_string(PruneMethod method) {
-  switch (method) {
-    case PruneMethod::masking: return "masking";
-    case PruneMethod::naive: return "naive";
-    case PruneMethod::energy: return "energy";
-    case PruneMethod::loudness: return "loudness";
-  }
-  return "?";
-}
-
-std::string_view to_string(ModeOrder order) {
-  switch (order) {
-    case ModeOrder::naive: return "naive";
-    case ModeOrder::energy: return "energy";
-    case ModeOrder::loudness: return "loudness";
-  }
-  return "?";
-}
-
-std::string_view to_string(MaskingCombine combine) {
-  return combine == MaskingCombine::max ? "max" : "sum";
-}
+std::string_view to_string(PruneMethod method) { return enum_name(kPruneMethodNames, method); }
+std::string_view to_string(ModeOrder order) { return enum_name(kModeOrderNames, order); }
+std::string_view to_string(MaskingCombine combine) { return enum_name(kMaskingCombineNames, combine); }
 
 ModeOrder effective_order(const PruneOptions& options) {
   switch (options.method) {

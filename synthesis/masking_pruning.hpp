@@ -29,12 +29,21 @@
 #include <vector>
 
 #include "synthesis/modal_model.hpp"
+#include "synthesis/name_table.hpp"
 
 namespace ms {
 
 enum class PruneMethod { masking, naive, energy, loudness };
 enum class ModeOrder { naive, energy, loudness };
 enum class MaskingCombine { max, sum };
+inline constexpr NameTable<PruneMethod, 4> kPruneMethodNames{{{PruneMethod::masking, "masking"},
+                                                              {PruneMethod::naive, "naive"},
+                                                              {PruneMethod::energy, "energy"},
+                                                              {PruneMethod::loudness, "loudness"}}};
+inline constexpr NameTable<ModeOrder, 3> kModeOrderNames{
+    {{ModeOrder::naive, "naive"}, {ModeOrder::energy, "energy"}, {ModeOrder::loudness, "loudness"}}};
+inline constexpr NameTable<MaskingCombine, 2> kMaskingCombineNames{
+    {{MaskingCombine::max, "max"}, {MaskingCombine::sum, "sum"}}};
 
 std::optional<PruneMethod> parse_prune_method(std::string_view name);
 std::optional<ModeOrder> parse_mode_order(std::string_view name);

@@ -7,20 +7,11 @@
 namespace ms {
 
 LevelMode parse_level_mode(const std::string& name) {
-  if (name == "none") return LevelMode::none;
-  if (name == "peak") return LevelMode::peak;
-  if (name == "attack_rms") return LevelMode::attack_rms;
-  throw std::invalid_argument("unknown normalize '" + name + "' (expected none, peak or attack_rms)");
+  if (const auto mode = find_enum(kLevelModeNames, name)) return *mode;
+  throw std::invalid_argument(unknown_name_problem("normalize", name, kLevelModeNames));
 }
 
-std::string to_string(LevelMode mode) {
-  switch (mode) {
-    case LevelMode::none: return "none";
-    case LevelMode::peak: return "peak";
-    case LevelMode::attack_rms: return "attack_rms";
-  }
-  return "?";
-}
+std::string to_string(LevelMode mode) { return std::string(enum_name(kLevelModeNames, mode)); }
 
 double level_gain(const std::vector<float>& samples, double sample_rate_hz, const OutputLevel& level) {
   const double target = std::pow(10.0, level.target_dbfs / 20.0);

@@ -4,9 +4,13 @@
 #include <string>
 #include <vector>
 
+#include "synthesis/name_table.hpp"
+
 namespace ms {
 
 enum class LevelMode { none, peak, attack_rms };
+inline constexpr NameTable<LevelMode, 3> kLevelModeNames{
+    {{LevelMode::none, "none"}, {LevelMode::peak, "peak"}, {LevelMode::attack_rms, "attack_rms"}}};
 
 struct OutputLevel {
   LevelMode mode = LevelMode::none;

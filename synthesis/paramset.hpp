@@ -1,6 +1,8 @@
 // Parameter set: one stimulus recipe (stimuli/*.yaml), resolved into everything the renderer needs.
 // The model comes from inline modes, a modes CSV, or an analytic object (bar, plate, raw eigenvalues)
 // with a material or an explicit damping law. See README "Parameter sets" for every key.
+// YAML -> read_recipe -> ParamSetRecipe (paramset_recipe.hpp) -> resolve -> ParamSet -> render_stimulus;
+// write_yaml turns a recipe back into YAML.
 #pragma once
 #include <string>
 #include <vector>
@@ -10,6 +12,7 @@
 #include "synthesis/excitation.hpp"
 #include "synthesis/modal_model.hpp"
 #include "synthesis/output_level.hpp"
+#include "synthesis/paramset_recipe.hpp"
 #include "synthesis/path_confinement.hpp"
 
 namespace ms {
@@ -32,7 +35,14 @@ struct ParamSet {
   std::string recipe_hash;       // SHA-256 of the canonical resolved recipe (hex)
 };
 
-// Reads and resolves a parameter set; `overrides` are "key.path=value" (like --set).
+// The renderable set a recipe describes: the material looked up, the modes built (inline, from the
+// modes CSV, or from the object), support damping, doublets and pruning applied, the hash taken.
+// Throws InputError at the key's location for what only resolving finds (an unknown material or hit
+// point, a CSV that cannot be used, a doublet split too wide, no modes). Files the recipe names must lie
+// inside `confinement`; without one, inside paramset_confinement(the recipe's base_dir).
+ParamSet resolve(const ParamSetRecipe& recipe, const Confinement* confinement = nullptr);
+
+// read_recipe + resolve. Reads and resolves a parameter set; `overrides` are "key.path=value" (like --set).
 // Throws InputError with file:line:column for every problem a person can make. Files the set names
 // (a modes CSV) must lie inside `confinement`; without one, inside paramset_confinement(its folder).
 ParamSet load_paramset(const std::string& path, const std::vector<std::string>& overrides = {},
