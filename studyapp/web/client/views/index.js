@@ -1,0 +1,12 @@
+// One view per block type, as in the window.
+import ab from './ab.js';
+import adjust from './adjust.js';
+import identify from './identify.js';
+import instructions from './instructions.js';
+import magnitude from './magnitude.js';
+import mushra from './mushra.js';
+import questionnaire from './questionnaire.js';
+import rating from './rating.js';
+import staircase from './staircase.js';
+
+export const views = { ab, adjust, identify, instructions, magnitude, mushra, questionnaire, rating, staircase };
