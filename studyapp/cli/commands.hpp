@@ -9,7 +9,6 @@ void register_stimuli(CLI::App& app);
 void register_bench(CLI::App& app);
 void register_materials(CLI::App& app);
 void register_fit_damping(CLI::App& app);
-void register_validate_damping(CLI::App& app);
 void register_extract(CLI::App& app);
 void register_prune(CLI::App& app);
 void register_stats(CLI::App& app);
@@ -19,7 +18,6 @@ void register_protocol(CLI::App& app);
 void register_audit(CLI::App& app);
 void register_audit_generate(CLI::App& app);
 void register_compare(CLI::App& app);
-void register_estimate(CLI::App& app);
 void register_serve(CLI::App& app);
 
 }  // namespace ms::cli

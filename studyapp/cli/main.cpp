@@ -15,7 +15,6 @@ int main(int argc, char** argv) {
   ms::cli::register_bench(app);
   ms::cli::register_materials(app);
   ms::cli::register_fit_damping(app);
-  ms::cli::register_validate_damping(app);
   ms::cli::register_extract(app);
   ms::cli::register_prune(app);
   ms::cli::register_stats(app);
@@ -25,7 +24,6 @@ int main(int argc, char** argv) {
   ms::cli::register_audit(app);
   ms::cli::register_audit_generate(app);
   ms::cli::register_compare(app);
-  ms::cli::register_estimate(app);
   ms::cli::register_serve(app);
   try {
     app.parse(argc, argv);
