@@ -53,11 +53,12 @@ ModalModel strike_model(const AuditModel& model, std::size_t s) {
       amp *= std::abs(g);
       phase = std::arg(g);
     }
-    if (m.split_hz > 0.0) {
+    if (m.doublet.split_hz > 0.0) {
       // Keep the pair's energy equal to the merged mode's (tracks merge members by energy).
-      const double norm = std::hypot(1.0 - m.balance, m.balance);
-      out.modes.push_back({m.freq_hz - 0.5 * m.split_hz, d, amp * (1.0 - m.balance) / norm, phase});
-      out.modes.push_back({m.freq_hz + 0.5 * m.split_hz, d, amp * m.balance / norm, phase});
+      const Doublets& db = m.doublet;
+      const double norm = std::hypot(1.0 - db.balance, db.balance);
+      out.modes.push_back({m.freq_hz - 0.5 * db.split_hz, d, amp * (1.0 - db.balance) / norm, phase});
+      out.modes.push_back({m.freq_hz + 0.5 * db.split_hz, d, amp * db.balance / norm, phase});
     } else {
       out.modes.push_back({m.freq_hz, d, amp, phase});
     }
@@ -102,8 +103,11 @@ Spectra predict_spectra(const AuditModel& model, const AuditData& data, std::siz
   for (float v : y) energy += double(v) * double(v);
   if (direct_energy) *direct_energy = energy;
   for (std::size_t r = 0; r < kResolutions; ++r) {
-    add_decaying_noise_power(spec[r], ms_.grids[r], energy, model.reverb_rt60_s, model.reverb_level_db);
-    add_decaying_noise_power(spec[r], ms_.grids[r], energy, 1e-3 * model.transient_ms, model.transient_level_db);
+    if (model.reverb.enabled)
+      add_decaying_noise_power(spec[r], ms_.grids[r], energy, model.reverb.rt60_s, model.reverb.level_db);
+    if (model.transient.enabled)
+      add_decaying_noise_power(spec[r], ms_.grids[r], energy, 1e-3 * model.transient.duration_ms,
+                               model.transient.level_db);
     add_band_noise_power(spec[r], ms_.grids[r], model.noise_band_variance);
   }
   return spec;

@@ -11,6 +11,7 @@
 #include "analysis/audit/mode_matching.hpp"
 #include "analysis/audit/strikes.hpp"
 #include "synthesis/damping_law.hpp"
+#include "synthesis/effects.hpp"
 #include "synthesis/modal_model.hpp"
 
 namespace ms::audit {
@@ -20,8 +21,8 @@ struct AuditMode {
   double decay_per_s = 0.0;
   double amp = 0.0;         // shape amplitude A_n (strike gain 1, ideal impulse)
   int track = -1;           // measured track it stands for (-1: none)
-  double split_hz = 0.0;    // mode_doublet: f -+ split/2
-  double balance = 0.5;     // share of the amplitude in the upper mode of the doublet
+  Doublets doublet;         // mode_doublet: f -+ split_hz/2 when split_hz > 0, `balance` of the amplitude
+                            // in the upper mode (the pair keeps the mode's energy)
 };
 
 struct AuditModel {
@@ -36,10 +37,8 @@ struct AuditModel {
   double contact_gain_ref = 1.0;
   double contact_exponent = 0.0;
   std::vector<double> noise_band_variance;  // noise_floor: white-equivalent variance per Bark band (empty: none)
-  double reverb_rt60_s = 0.0;            // reverberation: white tail decaying 60 dB in this (0: none)
-  double reverb_level_db = 0.0;          // ... its energy relative to the strike's direct sound
-  double transient_ms = 0.0;             // residual_transient: white burst decaying 60 dB in this (0: none)
-  double transient_level_db = 0.0;       // ... its energy relative to the strike's direct sound
+  Reverb reverb;                         // reverberation: a white tail, energy relative to each strike's direct sound
+  AttackTransient transient;             // residual_transient: a white burst, likewise
   std::size_t transient_pseudo_modes = 0; // ... burst tracks the plain model had taken for modes (dropped)
   std::vector<std::string> effects;      // named, in order
 };

@@ -75,17 +75,17 @@ void extend(const AuditData& data, AuditModel& model, const std::vector<std::siz
   for (const auto& [track, pair] : split_tracks(data, train))
     for (AuditMode& m : model.modes)
       if (m.track == int(track)) {
-        m.split_hz = pair.split_hz;
-        m.balance = pair.balance;
+        m.doublet.split_hz = pair.split_hz;
+        m.doublet.balance = pair.balance;
       }
 }
 
 Parameters parameters(const AuditData&, const AuditModel& model) {
   std::vector<double> splits, balances;
   for (const AuditMode& m : model.modes)
-    if (m.split_hz > 0) {
-      splits.push_back(m.split_hz);
-      balances.push_back(m.balance);
+    if (m.doublet.split_hz > 0) {
+      splits.push_back(m.doublet.split_hz);
+      balances.push_back(m.doublet.balance);
     }
   return {{"doublets", double(splits.size())}, {"median_split_hz", median(splits)}, {"median_balance", median(balances)}};
 }

@@ -61,10 +61,9 @@ void extend(const AuditData& data, AuditModel& model, const std::vector<std::siz
   model.transient_pseudo_modes += model.modes.size() - modes.size();
   model.modes = std::move(modes);
   AuditModel without = model;
-  without.transient_ms = 0.0;
+  without.transient = {};
   const DecayingNoiseFit f = fit_decaying_noise(data, without, train, 1e-3 * kMinMs, 1e-3 * kMaxMs, kMinLevelDb, kMaxLevelDb);
-  model.transient_ms = 1e3 * f.t60_s;
-  model.transient_level_db = f.level_db;
+  model.transient = {.level_db = f.level_db, .duration_ms = 1e3 * f.t60_s, .enabled = true};
 }
 
 // Energy of the second difference of x over [from, to) samples (white noise gains 6, 1 kHz 4e-4).
@@ -114,7 +113,7 @@ Detection detect(const AuditData& data, const AuditModel&) {
 }
 
 Parameters parameters(const AuditData&, const AuditModel& model) {
-  return {{"duration_ms", model.transient_ms}, {"level_db", model.transient_level_db},
+  return {{"duration_ms", model.transient.duration_ms}, {"level_db", model.transient.level_db},
           {"pseudo_modes_dropped", double(model.transient_pseudo_modes)}};
 }
 

@@ -19,10 +19,9 @@ constexpr double kMinLevelDb = -60.0, kMaxLevelDb = 0.0;
 
 void extend(const AuditData& data, AuditModel& model, const std::vector<std::size_t>& train) {
   AuditModel without = model;
-  without.reverb_rt60_s = 0.0;
+  without.reverb = {};
   const DecayingNoiseFit f = fit_decaying_noise(data, without, train, kMinRt60S, kMaxRt60S, kMinLevelDb, kMaxLevelDb);
-  model.reverb_rt60_s = f.t60_s;
-  model.reverb_level_db = f.level_db;
+  model.reverb = {.rt60_s = f.t60_s, .level_db = f.level_db, .enabled = true};
 }
 
 Detection detect(const AuditData& data, const AuditModel& current) {
@@ -33,13 +32,13 @@ Detection detect(const AuditData& data, const AuditModel& current) {
                                                    "a tail common to all bands decays independently of the modes "
                                                    "(RT60 %.2f s, %.1f dB re the direct sound); adding it lowers "
                                                    "the gap from %.2f to %.2f dB",
-                                                   with.reverb_rt60_s, with.reverb_level_db, before, after);
+                                                   with.reverb.rt60_s, with.reverb.level_db, before, after);
                                      return std::string(buf);
                                    });
 }
 
 Parameters parameters(const AuditData&, const AuditModel& model) {
-  return {{"rt60_s", model.reverb_rt60_s}, {"level_db", model.reverb_level_db}};
+  return {{"rt60_s", model.reverb.rt60_s}, {"level_db", model.reverb.level_db}};
 }
 
 }  // namespace

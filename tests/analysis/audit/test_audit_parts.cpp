@@ -139,10 +139,8 @@ TEST(AuditBaseline, ReverbAndTransientExtensionsRenderFromYaml) {
   const AuditData data = make_audit_data(hc.recordings);
   const AuditResult r = run_audit(data);
   AuditModel m = r.final_model;
-  m.reverb_rt60_s = 0.6;
-  m.reverb_level_db = -25.0;
-  m.transient_ms = 5.0;
-  m.transient_level_db = -15.0;
+  m.reverb = {.rt60_s = 0.6, .level_db = -25.0, .enabled = true};
+  m.transient = {.level_db = -15.0, .duration_ms = 5.0, .enabled = true};
   const std::string yaml = augmented_paramset_yaml(data, m, "test");
   EXPECT_NE(yaml.find("reverb: {rt60_s: 0.6, level_db: -25, seed: 2}"), std::string::npos) << yaml;
   EXPECT_NE(yaml.find("transient: {level_db: -15, duration_ms: 5, seed: 3}"), std::string::npos) << yaml;
@@ -200,8 +198,8 @@ TEST(AuditTransient, StrongBurstIsNamedFittedAndExplained) {
   const AuditResult r = run_audit(data);
   ASSERT_FALSE(r.named.empty());
   EXPECT_EQ(r.named.front().effect, "residual_transient");
-  EXPECT_NEAR(r.final_model.transient_ms, 5.9, 0.3 * 5.9);
-  EXPECT_NEAR(r.final_model.transient_level_db, -16.5, 3.0);
+  EXPECT_NEAR(r.final_model.transient.duration_ms, 5.9, 0.3 * 5.9);
+  EXPECT_NEAR(r.final_model.transient.level_db, -16.5, 3.0);
   EXPECT_LT(r.gap_after_db, 0.5 * r.gap_before_db);
   EXPECT_GE(r.final_model.modes.size(), 12u);  // the object's own modes stay
 }
