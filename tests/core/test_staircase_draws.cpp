@@ -9,6 +9,7 @@
 #include "studyapp/core/session.hpp"
 #include "studyapp/core/staircase_track.hpp"
 #include "studyapp/core/stimulus_cache.hpp"
+#include "studyapp/core/tidy_tables.hpp"
 #include "synthesis/tidy_csv.hpp"
 
 namespace ms {
@@ -133,6 +134,32 @@ TEST(StaircaseDraws, AResumedTrackDrawsTheRestAsAnUninterruptedOneAndKeepsTheCho
     ++steps;
   }
   EXPECT_EQ(steps, resumed.size());
+}
+
+// A store with tracks from before choices were kept and after: the column is there, NA for the old steps.
+TEST(StaircaseDraws, OldTracksBesideNewOnesExportNaAsTheirChoice) {
+  ResponseRow old_track;
+  old_track.study = "s";
+  old_track.participant = 1;
+  old_track.session = 1;
+  old_track.block_id = "sc";
+  old_track.block_type = "staircase";
+  old_track.stimuli_json = R"(["low"])";
+  old_track.value_json = R"({"levels":[0.2,0.15],"correct":[true,false],"parameter":"amp_scale","threshold":null})";
+  ResponseRow new_track = old_track;
+  new_track.session = 2;
+  new_track.value_json =
+      R"({"levels":[0.2],"correct":[true],"chosen":["B"],"parameter":"amp_scale","threshold":null})";
+  const TidyCsv t = TidyCsv::parse(tidy_tables({old_track, new_track}).at("staircase.csv"), "staircase.csv");
+  ASSERT_EQ(t.rows(), 3u);
+  EXPECT_EQ(t.cell(0, t.column("chosen")), "NA");
+  EXPECT_EQ(t.cell(1, t.column("chosen")), "NA");
+  EXPECT_EQ(t.cell(2, t.column("chosen")), "B");
+  EXPECT_EQ(t.cell(2, t.column("correct")), "1");
+  // Only old tracks: the table keeps the columns it always had.
+  const std::string only_old = tidy_tables({old_track}).at("staircase.csv");
+  EXPECT_EQ(only_old.substr(0, only_old.find('\r')),
+            "study,participant,session,autopilot,block,trial,stimulus,parameter,step,level,next_level,correct,threshold");
 }
 
 }  // namespace
