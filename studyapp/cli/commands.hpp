@@ -9,6 +9,7 @@ void register_stimuli(CLI::App& app);
 void register_bench(CLI::App& app);
 void register_materials(CLI::App& app);
 void register_fit_damping(CLI::App& app);
+void register_validate_damping(CLI::App& app);
 void register_extract(CLI::App& app);
 void register_prune(CLI::App& app);
 void register_stats(CLI::App& app);

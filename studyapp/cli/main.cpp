@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   ms::cli::register_bench(app);
   ms::cli::register_materials(app);
   ms::cli::register_fit_damping(app);
+  ms::cli::register_validate_damping(app);
   ms::cli::register_extract(app);
   ms::cli::register_prune(app);
   ms::cli::register_stats(app);

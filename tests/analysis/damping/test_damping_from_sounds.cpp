@@ -1,7 +1,7 @@
-// The published synthetic validation (Sterling et al. 2019, sec. 1.3.3) run end to end on SOUNDS:
-// each strike is rendered (a known Rayleigh material plus a random one-sided support damping per
-// strike, 40 dB SNR), its modes are extracted by extract_features, and the features of 10-40 strikes
-// are fitted by each estimator. Unlike test_damping_fit.cpp (features drawn from the model), the
+// The published synthetic validation (Sterling et al. 2019, sec. 1.3.3) run end to end on SOUNDS
+// (synthetic_strikes): each strike is rendered (a known Rayleigh material plus a random one-sided
+// support damping per strike, 40 dB SNR), its modes are extracted by extract_features, and the
+// features of 10-40 strikes are fitted by each estimator. Unlike test_damping_fit.cpp (features drawn from the model), the
 // decays here carry the extractor's own errors and spurious modes.
 // What it shows: LB beats LSQ for both materials (p < 1e-8). The published EMG (one normal sigma)
 // beats LSQ for steel but NOT for glass: the extractor's decay errors grow with the decay (+-20 1/s
@@ -15,49 +15,17 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 #include <numeric>
 #include <random>
 #include <string>
 
-#include "analysis/damping/damping_features.hpp"
 #include "analysis/damping/damping_fit.hpp"
-#include "analysis/extraction/feature_extraction.hpp"
+#include "analysis/damping/synthetic_validation.hpp"
 #include "analysis/stats/wilcoxon.hpp"
-#include "../extraction/extraction_fixtures.hpp"
-#include "synthesis/effects.hpp"
 #include "synthesis/material.hpp"
 
 namespace ms {
 namespace {
-
-constexpr double kFs = 44100.0;
-
-// Damping points of `count` strikes of one object made of `law`'s material: 15 modes between
-// 100 Hz and 15 kHz (a new object per strike, as in the published validation), amplitudes over 30 dB,
-// support damping Exp(mean) per mode with the mean drawn per strike (0.125-0.5 alpha1, in d).
-std::vector<std::vector<DampingPoint>> extracted_strikes(const DampingLaw& law, std::size_t count, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::vector<std::vector<DampingPoint>> strikes;
-  for (std::size_t s = 0; s < count; ++s) {
-    std::vector<double> lambdas, gains;
-    for (int i = 0; i < 15; ++i) {
-      lambdas.push_back(std::pow(2.0 * std::numbers::pi * 100.0 * std::pow(150.0, unit(rng)), 2));
-      gains.push_back(std::pow(10.0, -30.0 * unit(rng) / 20.0));
-    }
-    ModalModel model = modes_from_eigenvalues(lambdas, law, 1.0, 0.3, gains, nullptr);
-    SupportDamping support;
-    support.exponential_mean_per_s = 0.5 * (0.25 + 0.75 * unit(rng)) * law.alpha1;
-    support.seed = rng();
-    apply_support_damping(model, support);
-    const auto x = testing::render_noisy(model, kFs, 1.5, 40.0, seed * 1000 + s);
-    std::vector<DampingPoint> pts;
-    for (const Mode& m : extract_features(x, kFs).modes) pts.push_back(damping_point(m.freq_hz, m.decay_per_s));
-    strikes.push_back(std::move(pts));
-  }
-  return strikes;
-}
 
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
@@ -68,7 +36,7 @@ class DampingFromSounds : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(DampingFromSounds, SyntheticValidationOnExtractedFeatures) {
   const DampingLaw law = find_material(GetParam())->rayleigh;
-  const auto pool = extracted_strikes(law, 40, 2019);
+  const auto pool = synthetic_strikes(law, 40, 2019);
   std::mt19937_64 rng(7);
   std::uniform_int_distribution<std::size_t> how_many(10, 40);
   std::vector<double> emg, emg_rel, lb, lsq;
