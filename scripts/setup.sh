@@ -12,7 +12,10 @@ packages=(build-essential cmake ninja-build pkg-config
           xvfb xauth  # the GUI screenshot test runs under xvfb-run when it is there
           hydrogen-drumkits  # real struck-metal recordings for the model-audit tests (~140 MB)
           libqt6opengl6-dev  # Qt6Charts' CMake config needs Qt6OpenGL; Debian 12 does not pull it in
-          clang libclang-rt-dev)  # scripts/fuzz.sh: libFuzzer and the sanitizers' runtimes
+          clang libclang-rt-dev  # scripts/fuzz.sh: libFuzzer and the sanitizers' runtimes
+          chromium nodejs)  # the real-browser test of `modalstudy serve` (tests/web)
+# Debian's npm, unless the installed nodejs brings its own npm (as some nodejs builds do).
+command -v npm >/dev/null 2>&1 || packages+=(npm)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -22,6 +25,13 @@ if ((${#missing[@]})); then
   export DEBIAN_FRONTEND=noninteractive
   apt-get update -qq
   apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+# playwright-core (pinned in tests/web/package-lock.json) drives the system chromium: no browser download.
+if [[ ! -f tests/web/node_modules/playwright-core/package.json ||
+      tests/web/package-lock.json -nt tests/web/node_modules/.package-lock.json ]]; then
+  echo "== npm ci in tests/web (playwright-core)"
+  (cd tests/web && PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 npm ci --no-audit --no-fund --loglevel=error)
 fi
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
