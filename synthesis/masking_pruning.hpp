@@ -56,7 +56,10 @@ std::string_view to_string(MaskingCombine combine);
 struct PruneOptions {
   PruneMethod method = PruneMethod::masking;
   double threshold_db = 16.0;  // a_v; the 2002 study's median optimum (subjects ranged 3-20 dB)
-  double playback_db = 70.0;   // L_play [dB SPL] of the whole model right after the impact
+  // L_play [dB SPL]: the level the whole model is played at, shared among the modes by their
+  // time-integrated powers A^2/D (the paper's maskers; its "reference playback level ... (level
+  // immediately after impact)" calibrates this total, it does not make the shares onset powers A^2).
+  double playback_db = 70.0;
   MaskingCombine combine = MaskingCombine::max;
   ModeOrder order = ModeOrder::energy;  // used by method masking only
 };

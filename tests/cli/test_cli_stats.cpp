@@ -538,7 +538,9 @@ TEST(CliStatsPlot, ConfusionMdsAndMushraDrawPictures) {
 }
 
 // The 2002 study's Experiment 1 as trial series (a_v from 20 dB down in 1 dB steps until a difference
-// is heard): the descending method of limits gives back Table 1 and the pooled median a_v of 16 dB.
+// is heard). The series are written by hand FROM Table 1, so this checks that the method of limits
+// reads a series as the paper describes (the last "same" level), not the paper's result: it cannot
+// disagree with Table 1. Only a lab's own series can.
 TEST(CliStatsLimits, VanDenDoel2002Experiment1) {
   test::TempDir dir;
   const auto r = test::run_cli("stats limits " + kData + "vandendoel2002/experiment1_series.csv --level av_db "

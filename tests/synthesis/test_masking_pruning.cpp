@@ -87,6 +87,25 @@ TEST(MaskingPruning, TwoModesUpperSideMaskingByHand) {
   EXPECT_EQ(r10.audible, (std::vector<bool>{true, false}));
 }
 
+// Which level the 2002 paper normalises. Sec. 2 defines each mode's masker as a narrowband noise of
+// power A^2/D ("the power of the mode integrated over time") and shows the levels "normalized to a
+// reference playback level (level immediately after impact)". The reading taken here: the playback
+// level is the whole model's, and the modes share it in proportion to A^2/D (the maskers the paper
+// defines). The other reading, shares of the onset powers A^2, would make two modes of equal amplitude
+// equally loud whatever their decays, i.e. it would ignore the masker power the paper gives.
+// By hand: A = (1, 1), D = (1, 4) 1/s: P = (1, 0.25), sum 1.25;
+//   L0 = 70 + 10 log10(1/1.25) = 69.030899870 dB, L1 = 70 + 10 log10(0.25/1.25) = 63.010299957 dB
+//   (onset shares would give 66.989700043 dB for both).
+TEST(MaskingPruning, ModesShareThePlaybackLevelByTimeIntegratedPower) {
+  const ModalModel m = model_of({mode(1000, 1, 1), mode(3000, 4, 1)});
+  const PruneResult r = prune_modes(m, PruneOptions{});
+  EXPECT_NEAR(r.level_db[0], 69.030899870, 1e-9);
+  EXPECT_NEAR(r.level_db[1], 63.010299957, 1e-9);
+  EXPECT_NEAR(r.level_db[0] - r.level_db[1], 10 * std::log10(4.0), 1e-12);
+  // The levels' powers add up to the playback level.
+  EXPECT_NEAR(10 * std::log10(std::pow(10, r.level_db[0] / 10) + std::pow(10, r.level_db[1] / 10)), 70.0, 1e-12);
+}
+
 // Case B: modes 0 and 1 both at 2000 Hz with P = 1, mode 2 at 1500 Hz with P = 0.01.
 //   sum P = 2.01; L0 = L1 = 70 - 10 log10(2.01) = 66.968039, L2 = 46.968039.
 //   z(2000) = 13.104056, z(1500) = 11.199359: mode 2 is 1.904698 Bark below, on the lower side of

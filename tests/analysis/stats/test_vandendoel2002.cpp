@@ -33,8 +33,8 @@ double golden_median(const std::string& what) {
 
 }  // namespace
 
-// The paper: "experiments found a_v between 3 and 20 dB"; the median over both objects, 16 dB, was
-// the threshold used to build the stimuli of Experiments 2 and 3.
+// Table 1's optimal a_v range from 3 to 20 dB; the paper took their median over both objects, 16 dB
+// (sec. 4), as the threshold of the stimuli of Experiments 2 and 3.
 TEST(VanDenDoel2002, Table1MedianThresholds) {
   const TidyCsv t = TidyCsv::read(kDir + "table1_av.csv");
   ASSERT_EQ(t.rows(), 16u);
@@ -47,7 +47,7 @@ TEST(VanDenDoel2002, Table1MedianThresholds) {
   EXPECT_EQ(median(vase), golden_median("vase"));
   EXPECT_EQ(median(bowl), golden_median("bowl"));
   EXPECT_EQ(median(column(t, "av_db")), golden_median("pooled"));
-  // The range the paper quotes.
+  // Table 1's range.
   EXPECT_EQ(quantile(column(t, "av_db"), 0), 3.0);
   EXPECT_EQ(quantile(column(t, "av_db"), 1), 20.0);
 }

@@ -26,5 +26,6 @@ print(med); print(tests)
 
 # experiment1_series.csv (written by hand from Table 1, see tests/cli/test_cli_stats.cpp): each
 # subject's a_v series falls from 20 dB in 1 dB steps, "same" down to their optimum, then one
-# "different". The descending method of limits must give back Table 1 and the pooled median 16 dB:
+# "different". The descending method of limits must give back Table 1 and the pooled median 16 dB -
+# a check of how a series is read, not of the paper (the series are made from Table 1):
 #   median(c(5,16,15,17,14,18,15,3, 13,19,17,20,20,13,16,19)) == 16
