@@ -107,18 +107,15 @@ void damped_sine_power(const Mode& mode, double fs, const StftGrid& grid, std::s
   // Periodic Hann: w_j = sum_q w_q e^{i 2 pi q j / N}.
   constexpr int kQ[3] = {-1, 0, 1};
   constexpr double kWq[3] = {-0.25, 0.5, -0.25};
-  C pole[2], pole_n[2];
-  for (int c = 0; c < 2; ++c) {
-    pole[c] = std::exp(log_pole[c]);
-    pole_n[c] = std::exp(n * log_pole[c]);
-  }
-  // sum_{j=j0}^{N-1} r^j with r = pole e^{i turn}, turn = 2 pi (q - k) / N; r^N = pole^N because
-  // turn N is a whole number of turns.
-  const auto geometric = [&](int c, double turn, long long j0) {
+  const C pole[2] = {std::exp(log_pole[0]), std::exp(log_pole[1])};
+  // pole^s sum_{j=j0}^{N-1} r^j with r = pole e^{i turn}, turn = 2 pi (q - k) / N: the frame's window
+  // sum from its first sample at or after the strike, s + j0 >= 0 (so nothing overflows however fast
+  // the decay); r^N = pole^N e^{i turn N} and turn N is a whole number of turns.
+  const auto frame_sum = [&](int c, double turn, long long s, long long j0) {
     const C r = pole[c] * std::polar(1.0, turn);
-    if (std::abs(1.0 - r) <= 1e-12) return C(n - double(j0), 0.0);  // undamped and on the bin
-    const C r_j0 = j0 == 0 ? C(1.0, 0.0) : std::exp(double(j0) * log_pole[c]) * std::polar(1.0, turn * double(j0));
-    return (r_j0 - pole_n[c]) / (1.0 - r);
+    const C first = std::exp(double(s + j0) * log_pole[c]) * std::polar(1.0, turn * double(j0));
+    if (std::abs(1.0 - r) <= 1e-12) return first * (n - double(j0));  // undamped and on the bin
+    return (first - std::exp((double(s) + n) * log_pole[c])) / (1.0 - r);
   };
   // Frames wholly after the strike (j0 = 0) differ only by the factor pole^s: their window sums per
   // bin are computed once.
@@ -127,14 +124,16 @@ void damped_sine_power(const Mode& mode, double fs, const StftGrid& grid, std::s
   for (std::size_t k = bin_begin; k < bin_end; ++k)
     for (int c = 0; c < 2; ++c) {
       C sum(0.0, 0.0);
-      for (int qi = 0; qi < 3; ++qi) sum += kWq[qi] * geometric(c, kTwoPi * double(kQ[qi] - (long long)k) / n, 0);
+      for (int qi = 0; qi < 3; ++qi) sum += kWq[qi] * frame_sum(c, kTwoPi * double(kQ[qi] - (long long)k) / n, 0, 0);
       whole[2 * (k - bin_begin) + c] = sum;
     }
   for (std::size_t m = frame_begin; m < frame_end; ++m) {
     const long long s = frame_start(grid, m);
     const long long j0 = std::max(0LL, -s);  // first window sample at or after the strike
-    const C start[2] = {coef[0] * std::exp(double(s) * log_pole[0]), coef[1] * std::exp(double(s) * log_pole[1])};
     double* row = out + (m - frame_begin) * width;
+    C start[2] = {};  // coef pole^s, for the frames after the strike
+    if (j0 == 0)
+      for (int c = 0; c < 2; ++c) start[c] = coef[c] * std::exp(double(s) * log_pole[c]);
     for (std::size_t k = bin_begin; k < bin_end; ++k) {
       C x(0.0, 0.0);
       if (j0 == 0) {
@@ -142,7 +141,7 @@ void damped_sine_power(const Mode& mode, double fs, const StftGrid& grid, std::s
       } else {
         for (int qi = 0; qi < 3; ++qi)
           for (int c = 0; c < 2; ++c)
-            x += kWq[qi] * start[c] * geometric(c, kTwoPi * double(kQ[qi] - (long long)k) / n, j0);
+            x += kWq[qi] * coef[c] * frame_sum(c, kTwoPi * double(kQ[qi] - (long long)k) / n, s, j0);
       }
       row[k - bin_begin] = std::norm(x);
     }

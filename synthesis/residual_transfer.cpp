@@ -5,6 +5,7 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 
 namespace ms {
@@ -54,7 +55,11 @@ std::vector<Mode> heard_modes(const std::vector<Mode>& modes, const Excitation& 
   std::vector<Mode> heard = modes;
   for (Mode& m : heard) {
     std::complex<double> a = excitation.gain * std::polar(m.amp, m.phase_rad);
-    if (!impulse) a *= contact_factor(excitation, m.decay_per_s, m.freq_hz);
+    if (!impulse) {
+      // The free decay Im(a G e^{pt}) begins when the contact ends; its state then is the mode's start.
+      const std::complex<double> p(-m.decay_per_s, 2.0 * std::numbers::pi * m.freq_hz);
+      a *= contact_factor(excitation, m.decay_per_s, m.freq_hz) * std::exp(p * excitation.contact_s);
+    }
     m.amp = std::abs(a);
     m.phase_rad = std::arg(a);
   }
@@ -74,6 +79,8 @@ std::vector<float> transfer_residual_power(const ResidualSpectrogram& source, co
     std::copy_n(source.power.begin(), std::min(source.frames, target_frames) * bins, out.begin());
     return out;
   }
+  double loudest_source = 0.0;
+  for (const Mode& m : from) loudest_source = std::max(loudest_source, m.amp);
   Patch residual, source_mode, target_mode;
   std::vector<double> moved_mode(bins);  // one frame of the moved source mode, reused
   for (std::size_t i = 0; i < pairs; ++i) {
@@ -106,6 +113,10 @@ std::vector<float> transfer_residual_power(const ResidualSpectrogram& source, co
     target_mode.resize(target_frames, k_begin, k_end - k_begin);
     damped_sine_power(t, fs, grid, 0, target_frames, k_begin, k_end, target_mode.values.data());
 
+    // Below this (-120 dB under the source sine's peak, a^2 N^2 / 16) the moved source mode is gone.
+    const double present_s = 1e-12 * s.amp * s.amp * double(grid.fft_size) * double(grid.fft_size) / 16.0;
+    // A source mode 120 dB under the loudest (struck at its node) guides nothing.
+    const bool audible_source = s.amp > 1e-6 * loudest_source;
     for (std::size_t m = 0; m < target_frames; ++m) {
       const double frame = double(m) * time_ratio;
       // The source mode moved like the residual, and both modes' peaks in this frame (for the floor).
@@ -120,10 +131,10 @@ std::vector<float> transfer_residual_power(const ResidualSpectrogram& source, co
         if (moved == 0.0) continue;
         const double below = moved_mode[k - k_begin] + kPixelScaleFloor * peak_s;
         double scale = 1.0;  // a silent source mode says nothing about how its neighbourhood changes
-        if (s.amp > 0.0)
-          scale = below > 0.0 ? (target_mode.at((long long)m, (long long)k) + kPixelScaleFloor * peak_t) / below
-                              : (t.amp * t.amp) / (s.amp * s.amp);  // both modes decayed to nothing here
-        out[m * bins + k] = float(scale * moved);
+        if (audible_source)
+          scale = peak_s > present_s ? (target_mode.at((long long)m, (long long)k) + kPixelScaleFloor * peak_t) / below
+                                     : (t.amp * t.amp) / (s.amp * s.amp);  // the source mode has died away here
+        out[m * bins + k] = float(std::min(scale, kMaxPixelScale) * moved);
       }
     }
   }

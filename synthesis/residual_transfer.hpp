@@ -23,14 +23,21 @@
 
 namespace ms {
 
-// The modes as the listener hears them after the strike: amp and phase of g G a e^{i phase}, with g
-// the strike gain and G the contact's factor (1 for the impulse), as the renderers apply them.
+// The modes as the listener hears them after the strike: amp and phase of g a e^{i phase} G e^{p tau},
+// the free decay's state when a contact of tau ends (g the strike gain, G the contact's factor,
+// p = -d + i 2 pi f; tau = 0 and G = 1 for the impulse), as the renderers apply them, with its time
+// origin moved to the contact's end. (Extrapolated back to t = 0, a mode that dies within the contact
+// would count e^{d tau} times louder than it sounds.)
 std::vector<Mode> heard_modes(const std::vector<Mode>& modes, const Excitation& excitation);
 
 // Pixel scales are taken against a floor this far below each mode's peak in the frame (-30 dB), so
 // that A is the pixel ratio where the mode is present (its main lobe) and tends to the ratio of the
 // two modes' peaks in that frame elsewhere, instead of a ratio of window sidelobes or of 0/0.
 inline constexpr double kPixelScaleFloor = 1e-3;
+// No mode pair makes its neighbourhood louder than this (+60 dB): the pair of a loud target mode and
+// a source mode the strike hardly excited would otherwise amplify the residual without bound. A
+// source mode 120 dB under the loudest source mode leaves its neighbourhood unscaled.
+inline constexpr double kMaxPixelScale = 1e6;
 
 // The target's residual power: target_frames x source.grid.bins(), frame-major. `target`: the heard
 // modes of the object (below the source's Nyquist; others are ignored). Without a pair (no target
