@@ -21,6 +21,7 @@ ObjectEigen object_eigen_from_paramset(const std::string& path) {
       path, {"damping.law=rayleigh", "damping.alpha1=0", "damping.alpha2=0",
              "specific_modulus_m2_s2=" + std::to_string(kProbeModulus), "amp_scale=1"});
   ObjectEigen out;
+  out.strike = set.excitation;
   for (const Mode& m : set.model.modes) {
     const double omega = 2.0 * std::numbers::pi * m.freq_hz;
     out.lambda0.push_back(omega * omega / kProbeModulus);

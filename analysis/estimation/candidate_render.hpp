@@ -16,6 +16,7 @@ namespace ms {
 struct ObjectEigen {
   std::vector<double> lambda0;  // (rad/s)^2 per (m^2/s^2), ascending
   std::vector<double> gain;     // a0, one per eigenvalue
+  Excitation strike;            // how the object is struck (a parameter set's excitation)
 };
 
 struct Candidate {
@@ -26,7 +27,8 @@ struct Candidate {
 };
 
 // The object of a parameter set (its `object:` or `eigenvalues:` with gains, hit point, size and
-// stiffness scales); its material and damping are replaced, so any in the file is ignored.
+// stiffness scales) and its excitation; its material and damping are replaced, so any in the file is
+// ignored.
 // Throws InputError like load_paramset.
 ObjectEigen object_eigen_from_paramset(const std::string& path);
 

@@ -78,9 +78,17 @@ std::vector<StartPoint> start_points(const std::vector<Mode>& modes, const std::
   if (onto == StartEigenvalues::pareto) {
     front = pareto_eigenvalues(lambda0, excitation);
   } else {
-    for (std::size_t e = 0; e < lambda0.size(); ++e) {
-      const bool repeated = std::any_of(front.begin(), front.end(), [&](std::size_t k) { return lambda0[k] == lambda0[e]; });
-      if (excitation[e] != 0.0 && !repeated) front.push_back(e);
+    // The dominant mode is the k-th heard from below; each lower heard mode is a lower eigenvalue
+    // (bar spurious ones), missed and doubled (split degenerate) modes push it up, so it is not
+    // beyond the 3k + 8 lowest eigenvalues. The cap keeps a plate of hundreds of modes cheap.
+    const std::size_t heard_below = std::size_t(
+        std::count_if(modes.begin(), modes.end(), [&](const Mode& m) { return m.freq_hz <= top.freq_hz; }));
+    std::vector<std::size_t> order(lambda0.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return lambda0[i] < lambda0[j]; });
+    for (std::size_t e : order) {
+      if (front.size() >= 3 * heard_below + 8) break;
+      if (excitation[e] != 0.0 && (front.empty() || lambda0[front.back()] != lambda0[e])) front.push_back(e);
     }
   }
   for (std::size_t p = 0; p < rank.size(); ++p)

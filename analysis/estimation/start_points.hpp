@@ -45,7 +45,8 @@ struct StartPoint {
 // eigenvalue with a non-zero excitation (equal eigenvalues once). The loudest mode of a recording
 // need not lie on the excitation's Pareto set: the ear's weighting and the damping reorder the modes
 // (a bar struck near its end excites its fundamental most, yet a plastic bar's loudest mode is its
-// fifth), and then no Pareto start has the right gamma.
+// fifth), and then no Pareto start has the right gamma. `every` stops at the 3k + 8 lowest, k the
+// dominant mode's rank in frequency among `modes`.
 enum class StartEigenvalues { pareto, every };
 
 // All starting points from the `dominant` reference modes of largest weight (weights: one per mode,

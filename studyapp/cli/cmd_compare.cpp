@@ -13,67 +13,14 @@
 #include <iostream>
 
 #include "analysis/estimation/perceptual_metric.hpp"
-#include "analysis/extraction/feature_extraction.hpp"
-#include "analysis/extraction/noise_floor.hpp"
-#include "analysis/extraction/onset.hpp"
 #include "studyapp/cli/commands.hpp"
+#include "studyapp/cli/impact_recording.hpp"
+#include "studyapp/cli/plot_pictures.hpp"
 #include "studyapp/cli/stats_output.hpp"
 #include "studyapp/plots/plots.hpp"
-#include "synthesis/audio_file.hpp"
 #include "synthesis/input_error.hpp"
 
 namespace ms::cli {
-
-namespace {
-
-struct Recording {
-  std::string path;
-  double sample_rate_hz = 0.0;
-  double onset_s = 0.0;
-  std::vector<float> whole;    // mono, as recorded (the extractor finds its own onset)
-  std::vector<float> samples;  // mono, from the onset
-  std::vector<Mode> modes;     // extracted, amplitudes at the onset (feature and hybrid metrics)
-};
-
-Recording load(const std::string& path, int channel) {
-  const Audio audio = read_audio(path);
-  if (channel >= audio.channels)
-    throw InputError(SourceLocation{path, 0, 0}, "--channel " + std::to_string(channel) + " but the file has " +
-                                                     std::to_string(audio.channels) + " channel(s)");
-  std::vector<float> x = mono(audio, channel);
-  if (auto problem = recording_problem(x, audio.sample_rate_hz)) throw InputError(SourceLocation{path, 0, 0}, *problem);
-  Recording r;
-  r.path = path;
-  r.sample_rate_hz = audio.sample_rate_hz;
-  const std::vector<double> xd(x.begin(), x.end());
-  const std::size_t onset = find_onset(xd, estimate_noise_sigma(xd));
-  if (onset >= x.size()) throw InputError(SourceLocation{path, 0, 0}, "no impact found (no onset above the noise)");
-  r.onset_s = double(onset) / audio.sample_rate_hz;
-  r.samples.assign(x.begin() + std::ptrdiff_t(onset), x.end());
-  r.whole = std::move(x);
-  return r;
-}
-
-void extract(Recording& r) {
-  ExtractOptions options;  // the defaults of `modalstudy extract`
-  options.skip_contact_s = 0.5e-3;
-  options.max_attack_skip_s = 20e-3;
-  const ExtractedFeatures f = extract_features(r.whole, r.sample_rate_hz, options);
-  if (f.modes.empty())
-    throw InputError(SourceLocation{r.path, 0, 0}, "no modes found above the noise floor (the feature metric needs them)");
-  r.modes = f.modes;
-}
-
-// image[band][frame] for the plots.
-std::vector<std::vector<double>> by_band(const BarkImage& img, std::size_t frames) {
-  std::vector<std::vector<double>> out(img.bands, std::vector<double>(frames, 0.0));
-  for (std::size_t m = 0; m < img.frames && m < frames; ++m)
-    for (std::size_t b = 0; b < img.bands; ++b) out[b][m] = img.at(m, b);
-  return out;
-}
-
-
-}  // namespace
 
 void register_compare(CLI::App& app) {
   struct Options {
@@ -104,7 +51,7 @@ void register_compare(CLI::App& app) {
       throw InputError(SourceLocation{opt->plot_dir, 0, 0}, "--plot must be a folder");
     const bool image = opt->metric.empty() || opt->metric == "image" || opt->metric == "hybrid";
     const bool feature = opt->metric.empty() || opt->metric == "feature" || opt->metric == "hybrid";
-    Recording a = load(opt->a, opt->channel), b = load(opt->b, opt->channel);
+    ImpactRecording a = load_impact_recording(opt->a, opt->channel), b = load_impact_recording(opt->b, opt->channel);
     if (b.sample_rate_hz != a.sample_rate_hz) {
       char buf[160];
       std::snprintf(buf, sizeof buf, "sample rate %g Hz differs from %g Hz of %s (compare does not resample)",
@@ -112,8 +59,8 @@ void register_compare(CLI::App& app) {
       throw InputError(SourceLocation{opt->b, 0, 0}, buf);
     }
     if (feature) {
-      extract(a);
-      extract(b);
+      extract_impact_modes(a);
+      extract_impact_modes(b);
     }
     PerceptualOptions options;
     options.playback_db_spl = opt->playback_db;

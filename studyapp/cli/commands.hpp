@@ -19,6 +19,7 @@ void register_protocol(CLI::App& app);
 void register_audit(CLI::App& app);
 void register_audit_generate(CLI::App& app);
 void register_compare(CLI::App& app);
+void register_estimate(CLI::App& app);
 void register_serve(CLI::App& app);
 
 }  // namespace ms::cli

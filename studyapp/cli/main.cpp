@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   ms::cli::register_audit(app);
   ms::cli::register_audit_generate(app);
   ms::cli::register_compare(app);
+  ms::cli::register_estimate(app);
   ms::cli::register_serve(app);
   try {
     app.parse(argc, argv);

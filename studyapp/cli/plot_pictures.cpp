@@ -13,10 +13,7 @@ using plots::PlotOptions;
 using plots::Series;
 using plots::XY;
 
-namespace {
-
-// The law c(lambda) sampled log-uniformly over [lo, hi], for drawing.
-std::vector<XY> sample_law(const DampingLaw& law, double lo, double hi, int n = 200) {
+std::vector<XY> sample_law(const DampingLaw& law, double lo, double hi, int n) {
   std::vector<XY> out;
   for (int i = 0; i < n; ++i) {
     const double lambda = lo * std::pow(hi / lo, double(i) / (n - 1));
@@ -24,6 +21,15 @@ std::vector<XY> sample_law(const DampingLaw& law, double lo, double hi, int n = 
   }
   return out;
 }
+
+std::vector<std::vector<double>> by_band(const BarkImage& img, std::size_t frames) {
+  std::vector<std::vector<double>> out(img.bands, std::vector<double>(frames, 0.0));
+  for (std::size_t m = 0; m < img.frames && m < frames; ++m)
+    for (std::size_t b = 0; b < img.bands; ++b) out[b][m] = img.at(m, b);
+  return out;
+}
+
+namespace {
 
 // "%.2g" without the exponent's sign and zero padding (9.6e-06 -> 9.6e-6): legends stay short.
 std::string short_g(double v) {
