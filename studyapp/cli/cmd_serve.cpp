@@ -33,6 +33,9 @@ void register_serve(CLI::App& app) {
   cmd->add_option("--client", opt->serve.client_dir, "Browser client folder (default the data folder's web/)");
   cmd->add_option("--base-url", opt->base_url, "Public address printed in the links (e.g. https://study.example.org)");
   cmd->add_option("--body-limit", opt->serve.http.body_limit_bytes, "Largest request body in bytes (default 65536)");
+  cmd->add_option("--rate-limit", opt->serve.rate_per_second,
+                  "Requests per second one link may make after a burst of 300 (default 100; 0 = no limit)")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--allow-outside", opt->serve.allow_outside, "Allow stimulus files outside the protocol's folder");
   cmd->add_flag("--quiet", opt->quiet, "No request log on stderr");
   cmd->callback([opt] {

@@ -2,6 +2,7 @@
 #include "studyapp/web/study_server.hpp"
 
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <optional>
 
@@ -9,6 +10,7 @@
 #include "studyapp/core/protocol_validator.hpp"
 #include "studyapp/core/stimulus_cache.hpp"
 #include "studyapp/web/client_files.hpp"
+#include "studyapp/web/rate_limit.hpp"
 #include "studyapp/web/study_service.hpp"
 #include "studyapp/web/web_routes.hpp"
 #include "synthesis/bounded_file.hpp"
@@ -44,6 +46,7 @@ struct StudyServer::Impl {
   std::unique_ptr<StimulusCache> cache;
   std::unique_ptr<StudyService> service;
   std::unique_ptr<ClientFiles> client;
+  std::unique_ptr<RateLimit> limit;
   std::unique_ptr<HttpServer> http;
   std::vector<ParticipantLink> links;
 };
@@ -81,12 +84,15 @@ StudyServer::StudyServer(const ServeOptions& o, Logger log) : impl_(std::make_un
   setup.db_path = m.db_path;
   setup.links = m.links;
   m.service = std::make_unique<StudyService>(std::move(setup));
+  if (o.rate_per_second > 0) m.limit = std::make_unique<RateLimit>(o.rate_burst, o.rate_per_second);
   Handler handler = [&m, log](const WebRequest& request) {
     const auto start = std::chrono::steady_clock::now();
-    WebResponse response = route(*m.service, *m.client, request);
+    WebResponse response = route(*m.service, *m.client, request, m.limit.get());
     if (log) {
       const auto ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-      log(loggable_target(request) + " " + std::to_string(response.status) + " " + std::to_string(static_cast<int>(ms)) + " ms");
+      char took[32];
+      std::snprintf(took, sizeof took, " %.1f ms", ms);
+      log(loggable_target(request) + " " + std::to_string(response.status) + took);
     }
     return response;
   };

@@ -20,6 +20,8 @@ struct ServeOptions {
   std::string participant_list;   // ... or read them (participant,token)
   std::string links_path;         // issued links are kept here ("" = <db>.links.csv) and reused
   bool allow_outside = false;
+  double rate_burst = 300;        // requests a link may make at once ...
+  double rate_per_second = 100;   // ... and per second after that (0 = no limit)
   HttpOptions http;
 };
 

@@ -65,8 +65,15 @@ WebResponse dispatch(StudyService& service, const ClientFiles& client, const Web
 
 }  // namespace
 
-WebResponse route(StudyService& service, const ClientFiles& client, const WebRequest& request) {
+WebResponse route(StudyService& service, const ClientFiles& client, const WebRequest& request, RateLimit* limit) {
   try {
+    if (limit) {
+      const std::vector<std::string> s = segments(request.target);
+      const bool client_file = !s.empty() && s[0] == "client";
+      const bool names_link = s.size() >= 2 && (s[0] == "api" || s[0] == "s") && service.knows(s[1]);
+      if (!client_file && !limit->allow(names_link ? s[1] : std::string()))
+        throw Refusal(429, "too many requests; please wait a moment");
+    }
     return dispatch(service, client, request);
   } catch (const Refusal& e) {
     return error_response(e.status(), e.what());

@@ -10,13 +10,17 @@
 #include <string>
 
 #include "studyapp/web/client_files.hpp"
+#include "studyapp/web/rate_limit.hpp"
 #include "studyapp/web/study_service.hpp"
 #include "studyapp/web/web_request.hpp"
 
 namespace ms::web {
 
-// Never throws: refusals and internal errors become their responses.
-WebResponse route(StudyService& service, const ClientFiles& client, const WebRequest& request);
+// Never throws: refusals and internal errors become their responses. With `limit`, requests naming a
+// link count against that link's bucket and all other requests but client files against one shared
+// bucket; over the limit: 429.
+WebResponse route(StudyService& service, const ClientFiles& client, const WebRequest& request,
+                  RateLimit* limit = nullptr);
 
 // What a log line may say about a request: its method and route with every token and id elided
 // ("POST /api/*/answer"), so the log holds no link and nothing a participant typed.

@@ -165,6 +165,17 @@ if (rows.length !== total) fail(`the store holds ${rows.length} responses, the s
 const header = readFileSync(join(out, 'responses.csv'), 'utf8').split(/\r?\n/)[0].split(',');
 const sessions = new Set(rows.map((r) => r.split(',')[header.indexOf('session')]));
 if (sessions.size !== 1) fail(`the responses come from ${sessions.size} sessions, not one (the reload must resume)`);
+// MUSHRA switches happened at a position inside the sound, logged with the audio clock's time.
+const events = readFileSync(join(out, 'events.csv'), 'utf8').split(/\r?\n/);
+const switches = events.filter((l) => l.includes(',mushra,') && l.includes(',switch,'));
+const positions = switches.map((l) => Number((l.match(/position_s"":([0-9.eE+-]+)/) || [])[1]));
+if (!switches.length || !positions.every((p) => p > 0)) fail(`MUSHRA switches without a position: ${switches.length} switches`);
+// How long the server took, from its request log: an answer committed and the next trial made; an adjust render.
+const took = (what) => [...serverLog.matchAll(new RegExp(`POST /api/\\*/${what} 200 ([0-9.]+) ms`, 'g'))].map((m) => Number(m[1])).sort((a, b) => a - b);
+const median = (v) => (v.length ? v[Math.floor(v.length / 2)] : NaN);
+const answers = took('answer'), renders = took('render');
+console.log(`server: answer committed + next trial p50 ${median(answers)} ms (max ${answers.at(-1)} ms, n=${answers.length}); ` +
+            `adjust render p50 ${median(renders)} ms (n=${renders.length}); ${switches.length} MUSHRA switches at positions > 0`);
 console.log(`browser session: ${total} trials answered (${staircaseSteps} staircase steps), reload resumed, ` +
             `${rows.length} responses exported from one session`);
 rmSync(work, { recursive: true, force: true });

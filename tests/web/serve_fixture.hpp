@@ -48,6 +48,8 @@ class ServeTest : public ::testing::Test {
     o.http.port = 0;
     o.http.threads = 1;
     o.http.body_limit_bytes = 16 * 1024;
+    o.rate_burst = rate_burst_;
+    o.rate_per_second = rate_per_second_;
     server_ = std::make_unique<web::StudyServer>(o);
     thread_ = std::thread([this] { server_->run(); });
   }
@@ -102,6 +104,7 @@ class ServeTest : public ::testing::Test {
     return ResultsStore(dir_.file("results.sqlite"), ResultsStore::Mode::read_only).count(table);
   }
 
+  double rate_burst_ = 300, rate_per_second_ = 100;
   TempDir dir_;
   std::string protocol_ = write_web_study(dir_);
   std::unique_ptr<web::StudyServer> server_;

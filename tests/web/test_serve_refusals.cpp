@@ -110,5 +110,19 @@ TEST_F(ServeTest, OneParticipantsLinkCannotAnswerForAnother) {
   EXPECT_EQ(post(api("answer", 1), answer_body(first)).status, 409);
 }
 
+TEST_F(ServeTest, ALinkHammeredBeyondItsRateIsToldToWait) {
+  rate_burst_ = 6;
+  rate_per_second_ = 0.01;  // no refill within the test
+  restart();
+  const nlohmann::json p = page();  // 1 request
+  for (int i = 0; i < 5; ++i) EXPECT_EQ(get(api("trial")).status, 200);
+  const HttpReply refused = post(api("answer"), answer_body(p));
+  EXPECT_EQ(refused.status, 429);
+  EXPECT_NE(refused.body.find("too many requests"), std::string::npos);
+  EXPECT_EQ(stored("responses"), 0);
+  EXPECT_EQ(get("/client/app.js").status, 200);  // the client's files are not counted
+  EXPECT_EQ(get(api("trial", 1)).status, 200);   // nor is another link's bucket touched
+}
+
 }  // namespace
 }  // namespace ms::test
