@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <optional>
 
 #include "studyapp/core/answers.hpp"
 #include "studyapp/core/response_format.hpp"
@@ -47,6 +48,30 @@ std::vector<std::vector<std::string>> staircase_rows(const StaircaseAnswer& a, c
   return rows;
 }
 
+// An A/B trial's pair as the protocol writes it ([first, second]) and whether it was played the other
+// way round: the schedule randomises which one is A. A bipolar score (B compared with A) and a
+// chosen letter are turned back to the written order, so answers to one pair can be averaged.
+struct WrittenPair {
+  std::string first, second;
+  bool swapped = false;
+};
+std::optional<WrittenPair> written_pair(const Block* block, const std::string& played_a, const std::string& played_b) {
+  const auto* ab = block ? std::get_if<AbBlock>(&block->body) : nullptr;
+  if (!ab) return std::nullopt;
+  for (const StimulusPair& p : ab->pairs) {
+    if (p[0].name == played_a && p[1].name == played_b) return WrittenPair{p[0].name, p[1].name, false};
+    if (p[0].name == played_b && p[1].name == played_a) return WrittenPair{p[0].name, p[1].name, true};
+  }
+  return std::nullopt;
+}
+
+// The answer in the written order: a bipolar score negated, a chosen letter exchanged, when swapped.
+std::string oriented_cell(const Answer& answer, bool swapped) {
+  if (const auto* bipolar = std::get_if<BipolarAnswer>(&answer)) return std::to_string(swapped ? -bipolar->score : bipolar->score);
+  if (const auto* choice = std::get_if<ChoiceAnswer>(&answer)) return to_string(swapped ? other(choice->chosen) : choice->chosen);
+  return cell(answer);
+}
+
 // Does any staircase answer keep the intervals chosen? Stores made before they were kept export the
 // staircase table without the `chosen` column, as they always did.
 bool any_staircase_choices(const std::vector<ResponseRow>& rows) {
@@ -59,7 +84,8 @@ const std::vector<std::string> kBase{"study", "participant", "session", "autopil
 
 const std::map<std::string, std::vector<std::string>>& type_columns() {
   static const std::map<std::string, std::vector<std::string>> c{
-      {"ab", {"stimulus_a", "stimulus_b", "stimulus_x", "response", "correct"}},
+      {"ab", {"stimulus_a", "stimulus_b", "stimulus_x", "response", "correct", "pair_first", "pair_second",
+              "swapped", "response_oriented"}},
       {"mushra", {"condition", "rating"}},
       {"magnitude", {"first", "second", "value", "modulus_a", "modulus_b", "modulus_value"}},
       {"identify", {"stimulus", "truth", "response", "correct"}},
@@ -164,7 +190,11 @@ std::map<std::string, std::string> tidy_tables(const std::vector<ResponseRow>& r
       std::string correct = "NA";
       const auto* choice = std::get_if<ChoiceAnswer>(&answer);
       if (s.size() == 3 && choice) correct = abx_correct(s, choice->chosen) ? "1" : "0";
-      add({at(0), at(1), at(2), cell(answer), correct}, at(0), at(1));
+      const std::optional<WrittenPair> written = written_pair(block, at(0), at(1));
+      add({at(0), at(1), at(2), cell(answer), correct, written ? written->first : "NA",
+           written ? written->second : "NA", written ? (written->swapped ? "1" : "0") : "NA",
+           written ? oriented_cell(answer, written->swapped) : "NA"},
+          at(0), at(1));
     } else if (const auto* mushra = std::get_if<MushraAnswer>(&answer)) {
       // The hidden reference is rated under its own name (`stats mushra --reference NAME`).
       for (const auto& [name, score] : mushra->scores) add({name, cell(mushra_score_json(score))}, name);

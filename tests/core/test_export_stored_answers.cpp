@@ -1,6 +1,7 @@
 // A database the autopilot filled with the demo (tests/data/answers_v1/demo-autopilot.sqlite) exports
 // to the same tables it did when it was made (the CSVs beside it): answers stored by earlier versions
-// stay readable, cell for cell.
+// stay readable, cell for cell. (ab.csv's last four columns, the protocol's written pair and the answer
+// turned to it, were added after the database was made: its rows are the earlier ones plus those.)
 #include <gtest/gtest.h>
 
 #include <filesystem>
