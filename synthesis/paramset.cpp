@@ -147,6 +147,24 @@ std::optional<Material> named_material(const ParamSetRecipe& r, const Confinemen
   r.origin.fail("material", "unknown material '" + r.material + "'" + (near.empty() ? "" : " (did you mean '" + near + "'?)"));
 }
 
+// `residual: {file: X}`: a residual file (residual_file.hpp), relative to the set's folder and inside its
+// confinement like a modes CSV, made at the set's sample rate; its bytes' digest enters the hash.
+ResidualUse read_residual(const ParamSetRecipe& r, const Confinement* confinement) {
+  const fs::path file = confined_file(r.origin, r.residual->file, "residual.file", confinement);
+  ResidualUse use;
+  const std::string bytes = read_named_file(r.origin, file, "residual.file", [](const std::string& path) {
+    return read_bounded_file(path, kResidualFileLimit);
+  });
+  use.spectrogram = std::make_shared<const ResidualSpectrogram>(parse_residual_file(bytes, file.string()));
+  if (use.spectrogram->sample_rate_hz != r.sample_rate_hz)
+    r.origin.fail("residual.file", "'" + file.string() + "' was made at " + csv::number(use.spectrogram->sample_rate_hz) +
+                                       " Hz, the set renders at " + csv::number(r.sample_rate_hz) + " Hz");
+  use.sha256 = sha256_hex(bytes);
+  use.gain_db = r.residual->gain_db;
+  use.seed = r.residual->seed;
+  return use;
+}
+
 DampingLaw object_law(const ParamSetRecipe& r, const std::optional<Material>& material) {
   if (r.damping) return *r.damping;
   if (!material) r.origin.fail("", "an 'object' model needs a 'material' or a 'damping' law");
@@ -244,6 +262,7 @@ ParamSet resolve(const ParamSetRecipe& r, const Confinement* confinement) {
   if (r.doublets) apply_recipe_doublets(r, p.model, orders);
   if (r.prune && !p.model.modes.empty()) apply_recipe_prune(r, p);
   if (p.model.modes.empty()) r.origin.fail("", "the model has no modes");
+  if (r.residual) p.residual = read_residual(r, confinement);
   p.recipe_hash = sha256_hex(canonical_recipe(p));
   return p;
 }
@@ -278,6 +297,8 @@ std::string canonical_recipe(const ParamSet& p) {
   if (p.transient.enabled)
     add("transient %.17g %.17g %llu\n", p.transient.level_db, p.transient.duration_ms,
         (unsigned long long)p.transient.seed);
+  if (p.residual.spectrogram)
+    add("residual %s %.17g %llu\n", p.residual.sha256.c_str(), p.residual.gain_db, (unsigned long long)p.residual.seed);
   add("modes %zu\n", p.model.modes.size());
   for (const Mode& m : p.model.modes)
     add("%.17g %.17g %.17g %.17g\n", m.freq_hz, m.decay_per_s, m.amp, m.phase_rad);

@@ -4,6 +4,8 @@
 // YAML -> read_recipe -> ParamSetRecipe (paramset_recipe.hpp) -> resolve -> ParamSet -> render_stimulus;
 // write_yaml turns a recipe back into YAML.
 #pragma once
+#include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -14,8 +16,17 @@
 #include "synthesis/output_level.hpp"
 #include "synthesis/paramset_recipe.hpp"
 #include "synthesis/path_confinement.hpp"
+#include "synthesis/residual_file.hpp"
 
 namespace ms {
+
+// The residual a set adds to its modes (`residual:`), read once when the set is resolved.
+struct ResidualUse {
+  std::shared_ptr<const ResidualSpectrogram> spectrogram;  // null: the set has no residual
+  std::string sha256;                                      // of the file's bytes (in the recipe hash)
+  double gain_db = 0.0;
+  std::uint64_t seed = 0;
+};
 
 struct ParamSet {
   std::string source;            // file it was read from ("" for text)
@@ -27,6 +38,7 @@ struct ParamSet {
   Reverb reverb;                 // added after rendering (relative to the direct sound), before noise
   AttackTransient transient;     // likewise
   BackgroundNoise noise;         // added after rendering, before the output level
+  ResidualUse residual;          // transferred to the model and added to it, before reverb and transient
   SampleFormat format = SampleFormat::float32;
   SourceLocation format_where;   // where output.format was written (the file alone when it was not)
   std::string description;       // free text

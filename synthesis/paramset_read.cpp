@@ -341,7 +341,7 @@ ParamSetRecipe read_recipe(const std::string& yaml_text, const std::string& file
   r.check_keys(root, "", {"description", "sample_rate", "duration_s", "modes", "object", "material",
                           "damping_law", "damping", "specific_modulus_m2_s2", "stiffness_scale",
                           "size_scale", "amp_scale", "fundamental_hz", "hit", "hit_gains",
-                          "excitation", "effects", "prune", "level", "output"});
+                          "excitation", "effects", "prune", "level", "output", "residual"});
   ParamSetRecipe recipe;
   recipe.origin.file = file;
   recipe.origin.base_dir = base_dir;
@@ -363,6 +363,13 @@ ParamSetRecipe read_recipe(const std::string& yaml_text, const std::string& file
   if (root["excitation"]) read.excitation(root["excitation"]);
   if (root["effects"]) read.effects(root["effects"]);
   if (root["prune"]) read.prune(root["prune"]);
+  if (const YAML::Node n = root["residual"]) {
+    r.check_keys(n, "residual", {"file", "gain_db", "seed"});
+    if (!n["file"]) r.fail(n, "residual", "expected {file: MATERIAL.residual.msr, gain_db, seed}");
+    read.note(n["file"], "residual.file");
+    recipe.residual = ResidualRecipe{r.text(n["file"], "residual.file"), 0.0, read.seed(n, "residual")};
+    if (n["gain_db"]) recipe.residual->gain_db = read.within(n["gain_db"], "residual.gain_db", -120, 40, "[-120, 40] dB");
+  }
   if (root["level"]) read.level(root["level"]);
   if (const YAML::Node o = root["output"]) {
     r.check_keys(o, "output", {"format"});

@@ -57,6 +57,14 @@ struct HitGains {
   std::vector<double> gains;  // one per mode
 };
 
+// `residual:` a residual file (MATERIAL.residual.msr, residual_file.hpp) transferred to this set's
+// object and added to its modes (residual_transfer.hpp).
+struct ResidualRecipe {
+  std::string file;        // path as written, relative to origin.base_dir
+  double gain_db = 0.0;    // on the transferred residual's amplitude
+  std::uint64_t seed = 0;  // Griffin-Lim's initial phases
+};
+
 struct PruneRecipe {
   PruneOptions options;
   std::optional<std::size_t> keep;  // the first `keep` modes in the ordering (all when absent)
@@ -101,6 +109,7 @@ struct ParamSetRecipe {
   Reverb reverb;
   AttackTransient transient;
   std::optional<PruneRecipe> prune;
+  std::optional<ResidualRecipe> residual;
   OutputLevel level{LevelMode::peak, -1.0, 0.005};
   SampleFormat format = SampleFormat::float32;
   RecipeOrigin origin;

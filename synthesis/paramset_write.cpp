@@ -211,6 +211,13 @@ std::string write_yaml(const ParamSetRecipe& r) {
   w.excitation(r.excitation);
   w.effects(r);
   if (r.prune) w.prune(*r.prune);
+  if (r.residual) {
+    w.begin_flow("residual");
+    w.text("file", r.residual->file);
+    if (r.residual->gain_db != 0.0) w.number("gain_db", r.residual->gain_db);
+    if (r.residual->seed != 0) w.seed(r.residual->seed);
+    w.end();
+  }
   w.level(r.level);
   w.begin_flow("output");
   w.name("format", kSampleFormatNames, r.format);

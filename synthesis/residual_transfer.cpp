@@ -151,4 +151,14 @@ GriffinLimResult render_transferred_residual(const ResidualSpectrogram& source, 
   return griffin_lim(power, source.grid, samples, options);
 }
 
+void add_transferred_residual(std::vector<float>& samples, const ResidualSpectrogram& source,
+                              const std::vector<Mode>& target, double sample_rate_hz, double gain_db,
+                              std::uint64_t seed) {
+  GriffinLimOptions options;
+  options.seed = seed;
+  const GriffinLimResult residual = render_transferred_residual(source, target, sample_rate_hz, samples.size(), options);
+  const double gain = std::pow(10.0, gain_db / 20.0);
+  for (std::size_t i = 0; i < samples.size(); ++i) samples[i] += float(gain * residual.samples[i]);
+}
+
 }  // namespace ms

@@ -14,6 +14,7 @@
 // shift is 0 and every ratio 1, so the transfer returns the source spectrogram bit for bit.
 #pragma once
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "synthesis/excitation.hpp"
@@ -50,5 +51,11 @@ std::vector<float> transfer_residual_power(const ResidualSpectrogram& source, co
 GriffinLimResult render_transferred_residual(const ResidualSpectrogram& source, const std::vector<Mode>& target,
                                              double sample_rate_hz, std::size_t samples,
                                              const GriffinLimOptions& options = {});
+
+// What a parameter set's `residual:` adds: render_transferred_residual of `samples.size()` samples
+// with `seed` (the default iterations), times 10^(gain_db / 20), added to `samples`.
+void add_transferred_residual(std::vector<float>& samples, const ResidualSpectrogram& source,
+                              const std::vector<Mode>& target, double sample_rate_hz, double gain_db,
+                              std::uint64_t seed);
 
 }  // namespace ms

@@ -6,6 +6,7 @@
 
 #include "synthesis/input_error.hpp"
 
+#include "synthesis/residual_transfer.hpp"
 #include "synthesis/resonator_bank.hpp"
 
 namespace ms {
@@ -28,6 +29,9 @@ RenderedStimulus render_stimulus(const ParamSet& p) {
   out.audio.sample_rate_hz = p.sample_rate_hz;
   out.audio.channels = 1;
   out.audio.samples = render_bank(model, p.excitation, p.sample_rate_hz, frames);
+  if (const auto& r = p.residual.spectrogram)
+    add_transferred_residual(out.audio.samples, *r, heard_modes(model.modes, p.excitation), p.sample_rate_hz,
+                             p.residual.gain_db, p.residual.seed);
   add_reverb_and_transient(out.audio.samples, p.sample_rate_hz, p.reverb, p.transient);
   add_background_noise(out.audio.samples, p.noise);
   out.level_gain = level_gain(out.audio.samples, p.sample_rate_hz, p.level);

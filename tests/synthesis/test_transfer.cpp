@@ -8,6 +8,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "residual_fixture.hpp"
 #include "synthesis/residual_transfer.hpp"
 
 using namespace ms;
@@ -94,24 +95,15 @@ TEST(ResidualTransfer, ToTheSameObjectThroughGriffinLim) {
   // A consistent residual (the power of a real decaying noise burst): the time signal rebuilt on the
   // same object has the source residual's spectrogram within -20 dB.
   const std::vector<Mode> modes = {Mode{500.0, 10.0, 0.2, 0.0}, Mode{1800.0, 30.0, 0.1, 0.0}};
-  ResidualSpectrogram r;
-  r.sample_rate_hz = kFs;
-  r.modes = modes;
-  std::mt19937_64 rng(8);
-  std::normal_distribution<double> normal;
-  std::vector<float> burst(22050);
-  for (std::size_t n = 0; n < burst.size(); ++n) burst[n] = float(0.1 * normal(rng) * std::exp(-40.0 * double(n) / kFs));
-  Stft stft(r.grid);
-  const std::vector<double> p = stft.power(burst);
-  r.power.assign(p.begin(), p.end());
-  r.frames = r.grid.frames_for(burst.size());
-  const GriffinLimResult out = render_transferred_residual(r, modes, kFs, burst.size());
+  constexpr std::size_t samples = 22050;
+  const ResidualSpectrogram r = test::noise_burst_residual(modes, 0.1, 40.0, samples, 8);
+  const GriffinLimResult out = render_transferred_residual(r, modes, kFs, samples);
   EXPECT_LE(out.spectral_convergence_db, -20.0);
   RecordProperty("spectral_convergence_db", std::to_string(out.spectral_convergence_db));
   EXPECT_LE(spectral_convergence_db(out.samples, r.power, r.grid), -20.0);
-  const GriffinLimResult again = render_transferred_residual(r, modes, kFs, burst.size());
+  const GriffinLimResult again = render_transferred_residual(r, modes, kFs, samples);
   EXPECT_EQ(out.samples, again.samples);
-  EXPECT_THROW(render_transferred_residual(r, modes, 48000.0, burst.size()), std::invalid_argument);
+  EXPECT_THROW(render_transferred_residual(r, modes, 48000.0, samples), std::invalid_argument);
 }
 
 TEST(ResidualTransfer, ShiftsWithTheMode) {
