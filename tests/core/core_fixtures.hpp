@@ -42,6 +42,15 @@ inline std::string write_small_study(const test::TempDir& dir, const std::string
                        extra_blocks);
 }
 
+// Autopilot options for a shipped protocol (protocols/NAME), with the store and the cache in `dir`.
+inline AutopilotOptions shipped_study(const std::string& protocol_name, const test::TempDir& dir) {
+  AutopilotOptions o;
+  o.protocol_path = std::string(MODALSTUDY_SOURCE_DIR) + "/protocols/" + protocol_name;
+  o.db_path = dir.file("study.sqlite");
+  o.cache_dir = dir.file("cache");
+  return o;
+}
+
 // Runs `participants` simulated participants (codes prefix0, prefix1, ...; seeds first_seed,
 // first_seed + 1, ...) with `o`'s protocol, store and cache, then exports the store into `out_dir`.
 // False when a session did not finish.

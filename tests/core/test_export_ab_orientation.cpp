@@ -14,10 +14,7 @@ using namespace ms;
 
 TEST(ExportAbOrientation, BipolarScoresAreTurnedToTheWrittenPair) {
   test::TempDir dir;
-  AutopilotOptions o;
-  o.protocol_path = std::string(MODALSTUDY_SOURCE_DIR) + "/protocols/ab_synthesis_methods.yaml";
-  o.db_path = dir.file("ab.sqlite");
-  o.cache_dir = dir.file("cache");
+  const AutopilotOptions o = ms::testing::shipped_study("ab_synthesis_methods.yaml", dir);
   ASSERT_TRUE(ms::testing::run_participants_and_export(o, 3, "L", 40, dir.file("out")));
   const TidyCsv t = TidyCsv::read(dir.file("out/ab.csv"));
   ASSERT_EQ(t.rows(), 30u);  // 3 listeners x 10 pairs

@@ -16,10 +16,7 @@ using namespace ms;
 
 TEST(ExportMagnitude, ModulusFromTheProtocolInExportAndStats) {
   test::TempDir dir;
-  AutopilotOptions o;
-  o.protocol_path = std::string(MODALSTUDY_SOURCE_DIR) + "/protocols/demo.yaml";
-  o.db_path = dir.file("demo.sqlite");
-  o.cache_dir = dir.file("cache");
+  const AutopilotOptions o = ms::testing::shipped_study("demo.yaml", dir);
   ASSERT_TRUE(ms::testing::run_participants_and_export(o, 2, "P", 7, dir.file("out")));
   const TidyCsv t = TidyCsv::read(dir.file("out/magnitude.csv"));
   ASSERT_GT(t.rows(), 0u);
