@@ -16,6 +16,7 @@
 
 #include "analysis/damping/damping_features.hpp"
 #include "analysis/estimation/estimate_material.hpp"
+#include "analysis/estimation/residual.hpp"
 #include "studyapp/cli/commands.hpp"
 #include "studyapp/cli/impact_recording.hpp"
 #include "studyapp/cli/plot_pictures.hpp"
@@ -166,7 +167,12 @@ void register_estimate(CLI::App& app) {
         {"iterations", e.iterations},
         {"seconds", seconds},
         {"matched_modes", e.matched_modes}};
-    if (!opt->output.empty()) write_file_atomically(opt->output, material_file_yaml(material));
+    std::string residual;  // MATERIAL.residual.msr beside the material file (analysis/estimation/residual.hpp)
+    if (!opt->output.empty()) {
+      residual = write_residual(opt->output, rec.samples, rec.sample_rate_hz, object, object.strike, e.material,
+                                material.source);
+      write_file_atomically(opt->output, material_file_yaml(material));
+    }
     if (!opt->report.empty()) {
       const ModalModel model = candidate_model(object, e.material, 0.5 * rec.sample_rate_hz);
       const std::vector<float> synthesis =
@@ -190,7 +196,7 @@ void register_estimate(CLI::App& app) {
                 e.material.beta, e.material.gamma, e.material.sigma);
     std::printf("metric: Pi_psycho %.6g sone^2, Pi_MRP %.4f, Pi_hybrid %.6g; %zu modes matched; %.2f s\n",
                 e.scores.psycho, e.scores.match.product, e.scores.hybrid, e.matched_modes, seconds);
-    if (!opt->output.empty()) std::printf("material file: %s\n", opt->output.c_str());
+    if (!opt->output.empty()) std::printf("material file: %s\nresidual file: %s\n", opt->output.c_str(), residual.c_str());
     if (!opt->report.empty()) std::printf("report: %s\n", opt->report.c_str());
   });
 }
