@@ -92,7 +92,8 @@ StudyServer::StudyServer(const ServeOptions& o, Logger log) : impl_(std::make_un
       const auto ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
       char took[32];
       std::snprintf(took, sizeof took, " %.1f ms", ms);
-      log(loggable_target(request) + " " + std::to_string(response.status) + took);
+      log(loggable_target(request) + " " + std::to_string(response.status) + took +
+          (response.log_note.empty() ? "" : " (" + response.log_note + ")"));
     }
     return response;
   };

@@ -19,6 +19,7 @@ struct WebResponse {
   std::string content_type = "application/json";
   std::string body;
   bool cacheable = false;  // client files may be cached; answers, pages and sounds never
+  std::string log_note;    // for the server's log only (why a 500 happened), never sent
 };
 
 // A refused request: its HTTP status and the reason the response's {"error": ...} gives.

@@ -77,9 +77,11 @@ WebResponse route(StudyService& service, const ClientFiles& client, const WebReq
     return dispatch(service, client, request);
   } catch (const Refusal& e) {
     return error_response(e.status(), e.what());
-  } catch (const std::exception&) {
+  } catch (const std::exception& e) {
     // Not the participant's doing (a store or cache failure): nothing half-done was committed.
-    return error_response(500, "the server could not do this; please try again");
+    WebResponse r = error_response(500, "the server could not do this; please try again");
+    r.log_note = e.what();
+    return r;
   }
 }
 
