@@ -8,6 +8,7 @@
 #include "analysis/stats/magnitude_estimation.hpp"
 #include "analysis/stats/mds.hpp"
 #include "synthesis/tidy_csv.hpp"
+#include "studyapp/core/answers.hpp"
 #include "studyapp/core/response_format.hpp"
 #include "studyapp/core/tidy_tables.hpp"
 
@@ -22,22 +23,25 @@ std::vector<AbProportion> ab_proportions(const std::vector<ResponseRow>& rows, c
   for (const ResponseRow& r : rows) {
     if (r.block_id != block_id || r.block_type != "ab") continue;
     const auto s = nlohmann::json::parse(r.stimuli_json);
-    const auto v = nlohmann::json::parse(r.value_json);
-    if (!s.is_array() || s.size() < 2 || !v.is_string()) continue;  // bipolar scores are numbers
-    const std::string a = s[0].get<std::string>(), b = s[1].get<std::string>(), answer = v.get<std::string>();
+    if (!s.is_array() || s.size() < 2) continue;
+    const Answer answer = read_stored_answer("ab", nlohmann::json::parse(r.value_json));
+    const auto* same_different = std::get_if<SameDifferentAnswer>(&answer);
+    const auto* choice = std::get_if<ChoiceAnswer>(&answer);
+    if (!same_different && !choice) continue;  // bipolar scores have no proportion
+    const std::string a = s[0].get<std::string>(), b = s[1].get<std::string>();
     auto it = std::find_if(counts.begin(), counts.end(), [&](const Count& c) {
       return (c.first == a && c.second == b) || (c.first == b && c.second == a);
     });
     if (it == counts.end()) {
       Count c{a, b, "", 0, 0};
-      c.measure = s.size() == 3 ? "correct" : (answer == "same" || answer == "different") ? "different" : "chose " + a;
+      c.measure = s.size() == 3 && choice ? "correct" : same_different ? "different" : "chose " + a;
       counts.push_back(c);
       it = counts.end() - 1;
     }
     bool success = false;
-    if (it->measure == "correct") success = abx_correct(s, answer);
-    else if (it->measure == "different") success = answer == "different";
-    else success = ab_chosen_stimulus(s, answer) == it->first;
+    if (it->measure == "correct") success = choice && abx_correct(s, choice->chosen);
+    else if (it->measure == "different") success = same_different && same_different->different;
+    else success = choice && ab_chosen_stimulus(s, choice->chosen) == it->first;
     it->successes += success ? 1u : 0u;
     ++it->trials;
   }

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "studyapp/core/answers.hpp"
+
 namespace ms {
 
 namespace {
@@ -28,34 +30,39 @@ std::string mushra_letter(std::size_t index) {
 }
 
 std::optional<TrainingFeedback> training_feedback(const Protocol& protocol, const Block& block, const Trial& trial,
-                                                  const nlohmann::json& answer) {
+                                                  const nlohmann::json& value) {
+  Answer answer;
+  try {
+    answer = read_stored_answer(to_string(block.type), value);
+  } catch (const AnswerError&) {
+    return std::nullopt;  // not an answer of this block type: nothing to say about it
+  }
   if (const auto* ab = std::get_if<AbBlock>(&block.body)) {
-    if (trial.stimuli.size() < 2 || !answer.is_string()) return std::nullopt;
-    const std::string given = answer.get<std::string>();
-    if (ab->mode == AbMode::same_different) {
+    if (trial.stimuli.size() < 2) return std::nullopt;
+    if (const auto* sd = std::get_if<SameDifferentAnswer>(&answer); sd && ab->mode == AbMode::same_different) {
       const bool same = trial.stimuli[0] == trial.stimuli[1];
-      return verdict(given == (same ? "same" : "different"),
-                     same ? "A and B were the same sound." : "A and B were different sounds.");
+      return verdict(sd->different != same, same ? "A and B were the same sound." : "A and B were different sounds.");
     }
-    if (ab->mode == AbMode::abx && trial.stimuli.size() == 3) {
-      const std::string right = trial.stimuli[2] == trial.stimuli[0] ? "A" : "B";
-      return verdict(given == right, "X was " + right + ".");
+    if (const auto* choice = std::get_if<ChoiceAnswer>(&answer); choice && ab->mode == AbMode::abx &&
+                                                                  trial.stimuli.size() == 3) {
+      const AbInterval right = trial.stimuli[2] == trial.stimuli[0] ? AbInterval::a : AbInterval::b;
+      return verdict(choice->chosen == right, "X was " + to_string(right) + ".");
     }
     return std::nullopt;
   }
   if (const auto* id = std::get_if<IdentifyBlock>(&block.body)) {
-    if (trial.stimuli.empty() || !answer.is_string()) return std::nullopt;
+    const auto* given = std::get_if<IdentifyAnswer>(&answer);
+    if (trial.stimuli.empty() || !given) return std::nullopt;
     const auto truth = identify_truth(protocol, *id, trial.stimuli[0]);
     if (!truth) return std::nullopt;
-    return verdict(answer.get<std::string>() == *truth, "the sound was " + *truth + ".");
+    return verdict(given->label == *truth, "the sound was " + *truth + ".");
   }
-  if (block.type == BlockType::mushra) {
-    if (!answer.is_object()) return std::nullopt;
+  if (const auto* mushra = std::get_if<MushraAnswer>(&answer)) {
     for (std::size_t i = 0; i < trial.stimuli.size(); ++i) {
-      if (trial.stimuli[i] != trial.reference || !answer.contains(trial.reference)) continue;
-      const double rating = answer[trial.reference].get<double>();
-      return verdict(rating >= 90.0, "sound " + mushra_letter(i) +
-                                         " was the reference itself (hidden); it should be rated 90 or more.");
+      const auto rated = mushra->scores.find(trial.reference);
+      if (trial.stimuli[i] != trial.reference || rated == mushra->scores.end()) continue;
+      return verdict(rated->second >= 90.0, "sound " + mushra_letter(i) +
+                                                " was the reference itself (hidden); it should be rated 90 or more.");
     }
   }
   return std::nullopt;
