@@ -24,9 +24,10 @@ void register_export(CLI::App& app) {
   cmd->add_flag("--json", opt->json, "Print one JSON object");
   cmd->callback([opt] {
     const ExportSummary s = export_results(opt->db, opt->out_dir);
+    for (const std::string& n : s.notices) std::cerr << "notice: " << opt->db << ": " << n << "\n";
     if (opt->json)
       std::cout << nlohmann::json{{"responses", s.responses}, {"csv", s.csv_path}, {"study_json", s.json_path},
-                                  {"tables", s.tables}}
+                                  {"tables", s.tables}, {"notices", s.notices}}
                        .dump()
                 << "\n";
     else {

@@ -111,7 +111,8 @@ ExportSummary export_results(const std::string& db_path, const std::string& out_
                             std::to_string(e.session), e.block_id, e.block_type, std::to_string(e.trial_index), e.kind,
                             e.stimulus, e.stimulus_hash, e.detail_json, iso8601_utc(e.timestamp_ms)});
   // The stored protocol texts say what the responses do not (truth, factors, moduli, staircase rules).
-  const auto tables = tidy_tables(rows, stored_protocols(store));
+  std::vector<std::string> unreadable;
+  const auto tables = tidy_tables(rows, stored_protocols(store), &unreadable);
 
   std::map<std::string, std::size_t> per_study;
   for (const ResponseRow& r : rows) ++per_study[r.study];
@@ -143,6 +144,7 @@ ExportSummary export_results(const std::string& db_path, const std::string& out_
   summary.csv_path = (std::filesystem::path(out_dir) / "responses.csv").string();
   summary.json_path = (std::filesystem::path(out_dir) / "study.json").string();
   summary.responses = rows.size();
+  summary.notices = std::move(unreadable);
   write_file_atomically(summary.csv_path, csv);
   write_file_atomically((std::filesystem::path(out_dir) / "trials.csv").string(), trials_csv);
   write_file_atomically((std::filesystem::path(out_dir) / "events.csv").string(), events_csv);

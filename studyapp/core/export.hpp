@@ -16,6 +16,7 @@ struct ExportSummary {
   std::string csv_path, json_path;
   std::size_t responses = 0;
   std::vector<std::string> tables;  // per-type tidy tables written (e.g. "mushra.csv")
+  std::vector<std::string> notices; // stored answers left out of the typed tables (see tidy_tables)
 };
 
 // Reads `db_path` (read-only; never modified) and writes out_dir/responses.csv, study.json, trials.csv

@@ -149,7 +149,8 @@ std::string identify_truth(const StimulusSource* stimulus, const std::string& st
 }
 
 std::map<std::string, std::string> tidy_tables(const std::vector<ResponseRow>& rows,
-                                               const std::map<std::string, Protocol>& protocols) {
+                                               const std::map<std::string, Protocol>& protocols,
+                                               std::vector<std::string>* unreadable) {
   std::vector<std::string> factors = factor_names(protocols);
   const bool staircase_choices = any_staircase_choices(rows);
   std::map<std::string, std::string> out;
@@ -184,7 +185,16 @@ std::map<std::string, std::string> tidy_tables(const std::vector<ResponseRow>& r
       csv += csv::line(line);
     };
     const auto s = nlohmann::json::parse(r.stimuli_json);
-    const Answer answer = read_stored_answer(r.block_type, nlohmann::json::parse(r.value_json));
+    Answer answer;
+    try {
+      answer = read_stored_answer(r.block_type, nlohmann::json::parse(r.value_json));
+    } catch (const std::exception& e) {  // AnswerError, or JSON the store should never hold
+      if (unreadable)
+        unreadable->push_back("session " + std::to_string(r.session) + ", block '" + r.block_id + "', trial " +
+                              std::to_string(r.trial_index) + ": answer not in " + r.block_type + ".csv (" +
+                              e.what() + ")");
+      continue;
+    }
     const auto at = [&](std::size_t i) { return i < s.size() ? s[i].get<std::string>() : std::string(); };
     if (r.block_type == "ab") {
       std::string correct = "NA";

@@ -19,9 +19,12 @@ const std::vector<std::string>& tidy_key_columns();  // study, participant, sess
 
 // File name (e.g. "mushra.csv") -> RFC 4180 CSV text; only types that have responses appear.
 // `protocols` maps a study id to its parsed protocol; a study without one gets empty truth and
-// factor cells (and NA for what only the protocol knows).
+// factor cells (and NA for what only the protocol knows). A stored answer that cannot be read as its
+// block type's answer (a store written by other software, or damaged) stays in responses.csv as
+// stored but gets no typed row; `unreadable`, when given, receives one line naming it and why.
 std::map<std::string, std::string> tidy_tables(const std::vector<ResponseRow>& rows,
-                                               const std::map<std::string, Protocol>& protocols = {});
+                                               const std::map<std::string, Protocol>& protocols = {},
+                                               std::vector<std::string>* unreadable = nullptr);
 
 // The participant as exported: the code if the study allows personal fields, else "p<id>".
 std::string exported_participant(const std::string& code, std::int64_t id, bool export_personal);

@@ -48,6 +48,10 @@ TEST(ExportCli, EveryCellOfResponsesCsv) {
   const std::string db = build_db(dir, false);
   const auto run = test::run_cli("export " + db + " -o " + dir.file("out"), dir);
   ASSERT_EQ(run.exit_code, 0) << run.err;
+  // The MUSHRA answer holds a text where a score belongs: kept verbatim in responses.csv, left out of
+  // mushra.csv, and said so.
+  EXPECT_NE(run.err.find("notice: " + db + ": session 1, block 'm1', trial 0: answer not in mushra.csv"),
+            std::string::npos) << run.err;
   const std::string csv_path = dir.file("out/responses.csv");
   const TidyCsv csv = TidyCsv::read(csv_path);
   const std::vector<std::string> header{"study",   "participant", "session", "autopilot", "block", "block_type",
