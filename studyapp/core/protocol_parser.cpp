@@ -127,165 +127,185 @@ StimulusSource parse_stimulus(const YamlReader& r, const YAML::Node& key, const 
   return s;
 }
 
+// The value of a key the block type requires; a located error naming the block type when it is missing.
+YAML::Node required(const YamlReader& r, const YAML::Node& n, const std::string& p, const Block& b, const char* key) {
+  if (!n[key]) r.fail(n, p, std::string("a '") + b.type_name + "' block needs '" + key + "'");
+  return n[key];
+}
+
+InstructionsBlock parse_instructions(const YamlReader& r, const YAML::Node& n, const std::string& p, const Block& b) {
+  r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "text"});
+  return InstructionsBlock{r.text(required(r, n, p, b, "text"), p + ".text")};
+}
+
+AbBlock parse_ab(const YamlReader& r, const YAML::Node& n, const std::string& p) {
+  r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "listen_all", "prompt", "feedback", "mode", "pairs"});
+  AbBlock ab;
+  if (n["mode"]) {
+    const std::string m = r.text(n["mode"], p + ".mode");
+    static const std::vector<std::string> modes{"same_different", "preference", "abx", "2afc", "bipolar"};
+    const auto it = std::find(modes.begin(), modes.end(), m);
+    if (it == modes.end()) {
+      const std::string near = nearest_key(m, modes);
+      r.fail(n["mode"], p + ".mode", "unknown mode '" + m + "'" +
+                                         (near.empty() ? "" : " (did you mean '" + near + "'?)"));
+    }
+    ab.mode = static_cast<AbMode>(it - modes.begin());
+  }
+  // Pairs [A, B] or, for every pair alike, triples [A, B, REF] with a reference to compare against.
+  const YAML::Node ps = n["pairs"];
+  if (ps && !ps.IsSequence()) r.fail(ps, p + ".pairs", "expected a list of pairs [[a, b], ...]");
+  for (std::size_t i = 0; ps && i < ps.size(); ++i) {
+    const std::string ip = idx(p + ".pairs", i);
+    const YAML::Node item = ps[i];
+    const bool triple = item.IsSequence() && item.size() == 3;
+    if (triple && ab.mode == AbMode::abx) r.fail(item, ip, "ABX plays X; a pair takes no reference");
+    if (i > 0 && triple != !ab.references.empty())
+      r.fail(item, ip, "write every pair of the block as [a, b] or every one as [a, b, reference]");
+    if (!triple) {
+      ab.pairs.push_back(pair(r, item, ip));
+      continue;
+    }
+    ab.pairs.push_back({ref(r, item[0], idx(ip, 0)), ref(r, item[1], idx(ip, 1))});
+    ab.references.push_back(ref(r, item[2], idx(ip, 2)));
+  }
+  return ab;
+}
+
+MushraBlock parse_mushra(const YamlReader& r, const YAML::Node& n, const std::string& p) {
+  r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "listen_all", "reference",
+                      "conditions", "anchors", "prompt", "feedback"});
+  MushraBlock m;
+  if (n["reference"]) m.reference = ref(r, n["reference"], p + ".reference");
+  m.conditions = refs(r, n["conditions"], p + ".conditions");
+  const YAML::Node a = n["anchors"];
+  if (!a || (a.IsScalar() && a.Scalar() == "auto")) m.auto_anchors = true;  // BS.1534 default
+  else if (a.IsScalar() && a.Scalar() == "none") m.auto_anchors = false;
+  else m.anchors = refs(r, a, p + ".anchors");
+  return m;
+}
+
+MagnitudeBlock parse_magnitude(const YamlReader& r, const YAML::Node& n, const std::string& p, const Block& b) {
+  r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "modulus", "pairs",
+                      "stimuli", "listen_all", "prompt", "feedback", "modulus_value"});
+  MagnitudeBlock g;
+  g.modulus = pair(r, required(r, n, p, b, "modulus"), p + ".modulus");
+  if (n["modulus_value"]) g.modulus_value = r.positive(n["modulus_value"], p + ".modulus_value");
+  g.stimuli = refs(r, n["stimuli"], p + ".stimuli");
+  const YAML::Node pr = n["pairs"];
+  if (!pr || (pr.IsScalar() && pr.Scalar() == "all")) {
+    g.all_pairs = true;
+  } else if (pr.IsScalar() && pr.Scalar() == "all_with_identical") {
+    g.all_pairs = g.identical_pairs = true;
+  } else {
+    g.pairs = pairs(r, pr, p + ".pairs");
+  }
+  return g;
+}
+
+IdentifyBlock parse_identify(const YamlReader& r, const YAML::Node& n, const std::string& p) {
+  r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "stimuli", "labels",
+                      "listen_all", "prompt", "feedback"});
+  return IdentifyBlock{refs(r, n["stimuli"], p + ".stimuli"), texts(r, n["labels"], p + ".labels")};
+}
+
+RatingBlock parse_rating(const YamlReader& r, const YAML::Node& n, const std::string& p, const Block& b) {
+  r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "listen_all", "stimuli",
+                      "attributes", "prompt", "feedback"});
+  RatingBlock rb;
+  rb.stimuli = refs(r, n["stimuli"], p + ".stimuli");
+  const YAML::Node at = required(r, n, p, b, "attributes");
+  if (!at.IsSequence()) r.fail(at, p + ".attributes", "expected a list of {name, points, low, high}");
+  for (std::size_t i = 0; i < at.size(); ++i) {
+    const std::string ap = idx(p + ".attributes", i);
+    r.check_keys(at[i], ap, {"name", "points", "low", "high"});
+    RatingAttribute a;
+    a.name = r.text(at[i]["name"], ap + ".name");
+    if (at[i]["points"]) a.points = count(r, at[i]["points"], ap + ".points", 2, 101);
+    if (at[i]["low"]) a.low = r.text(at[i]["low"], ap + ".low");
+    if (at[i]["high"]) a.high = r.text(at[i]["high"], ap + ".high");
+    rb.attributes.push_back(a);
+  }
+  return rb;
+}
+
+AdjustBlock parse_adjust(const YamlReader& r, const YAML::Node& n, const std::string& p, const Block& b) {
+  r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "paramset", "sliders",
+                      "target", "listen_all", "prompt", "feedback"});
+  AdjustBlock ad;
+  ad.paramset = ref(r, required(r, n, p, b, "paramset"), p + ".paramset");
+  if (n["target"]) ad.target = ref(r, n["target"], p + ".target");
+  const YAML::Node sl = n["sliders"];
+  if (sl && !sl.IsSequence()) r.fail(sl, p + ".sliders", "expected a list of {key, min, max}");
+  for (std::size_t i = 0; sl && i < sl.size(); ++i) {
+    const std::string sp = idx(p + ".sliders", i);
+    r.check_keys(sl[i], sp, {"key", "min", "max", "label", "low", "high", "show_value"});
+    Slider s{r.text(sl[i]["key"], sp + ".key"), r.number(sl[i]["min"], sp + ".min"),
+             r.number(sl[i]["max"], sp + ".max"), r.where(sl[i]["key"], sp + ".key")};
+    if (!(s.min < s.max)) r.fail(sl[i]["max"], sp + ".max", "must be greater than min");
+    if (sl[i]["label"]) s.label = r.text(sl[i]["label"], sp + ".label");
+    if (sl[i]["low"]) s.low = r.text(sl[i]["low"], sp + ".low");
+    if (sl[i]["high"]) s.high = r.text(sl[i]["high"], sp + ".high");
+    if (sl[i]["show_value"]) s.show_value = flag(r, sl[i]["show_value"], sp + ".show_value");
+    ad.sliders.push_back(s);
+  }
+  return ad;
+}
+
+StaircaseBlock parse_staircase(const YamlReader& r, const YAML::Node& n, const std::string& p, const Block& b) {
+  r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "stimulus",
+                      "reference", "parameter", "start", "step", "down_up", "reversals",
+                      "listen_all", "prompt", "feedback"});
+  StaircaseBlock s;
+  s.stimulus = ref(r, required(r, n, p, b, "stimulus"), p + ".stimulus");
+  if (n["reference"]) s.reference = ref(r, n["reference"], p + ".reference");
+  s.parameter = r.text(required(r, n, p, b, "parameter"), p + ".parameter");
+  s.parameter_where = r.where(n["parameter"], p + ".parameter");
+  s.start = r.number(required(r, n, p, b, "start"), p + ".start");
+  s.step = r.number(required(r, n, p, b, "step"), p + ".step");
+  if (s.step == 0.0) r.fail(n["step"], p + ".step", "must not be 0");
+  if (const YAML::Node du = n["down_up"]) {
+    if (!du.IsSequence() || du.size() != 2) r.fail(du, p + ".down_up", "expected [down, up], e.g. [2, 1]");
+    s.down = count(r, du[0], p + ".down_up[0]", 1, 10);
+    s.up = count(r, du[1], p + ".down_up[1]", 1, 10);
+  }
+  if (n["reversals"]) s.reversals = count(r, n["reversals"], p + ".reversals", 1, 100);
+  return s;
+}
+
+QuestionnaireBlock parse_questionnaire(const YamlReader& r, const YAML::Node& n, const std::string& p) {
+  r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "questions", "prompt"});
+  QuestionnaireBlock q;
+  const YAML::Node qs = n["questions"];
+  if (qs && !qs.IsSequence()) r.fail(qs, p + ".questions", "expected a list of questions");
+  for (std::size_t i = 0; qs && i < qs.size(); ++i) {
+    const std::string qp = idx(p + ".questions", i);
+    Question question;
+    question.id = "q" + std::to_string(i + 1);
+    if (qs[i].IsScalar()) {
+      question.text = r.text(qs[i], qp);
+    } else {
+      r.check_keys(qs[i], qp, {"id", "text", "options"});
+      if (qs[i]["id"]) question.id = r.text(qs[i]["id"], qp + ".id");
+      question.text = r.text(qs[i]["text"], qp + ".text");
+      question.options = texts(r, qs[i]["options"], qp + ".options");
+    }
+    q.questions.push_back(question);
+  }
+  return q;
+}
+
 BlockBody parse_body(const YamlReader& r, const YAML::Node& n, const std::string& p, Block& b) {
-  auto req = [&](const char* key) {
-    if (!n[key]) r.fail(n, p, std::string("a '") + b.type_name + "' block needs '" + key + "'");
-    return n[key];
-  };
   switch (b.type) {
-    case BlockType::instructions: {
-      r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "text"});
-      return InstructionsBlock{r.text(req("text"), p + ".text")};
-    }
-    case BlockType::ab: {
-      r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "listen_all", "prompt", "feedback", "mode", "pairs"});
-      AbBlock ab;
-      if (n["mode"]) {
-        const std::string m = r.text(n["mode"], p + ".mode");
-        static const std::vector<std::string> modes{"same_different", "preference", "abx", "2afc", "bipolar"};
-        const auto it = std::find(modes.begin(), modes.end(), m);
-        if (it == modes.end()) {
-          const std::string near = nearest_key(m, modes);
-          r.fail(n["mode"], p + ".mode", "unknown mode '" + m + "'" +
-                                             (near.empty() ? "" : " (did you mean '" + near + "'?)"));
-        }
-        ab.mode = static_cast<AbMode>(it - modes.begin());
-      }
-      // Pairs [A, B] or, for every pair alike, triples [A, B, REF] with a reference to compare against.
-      const YAML::Node ps = n["pairs"];
-      if (ps && !ps.IsSequence()) r.fail(ps, p + ".pairs", "expected a list of pairs [[a, b], ...]");
-      for (std::size_t i = 0; ps && i < ps.size(); ++i) {
-        const std::string ip = idx(p + ".pairs", i);
-        const YAML::Node item = ps[i];
-        const bool triple = item.IsSequence() && item.size() == 3;
-        if (triple && ab.mode == AbMode::abx) r.fail(item, ip, "ABX plays X; a pair takes no reference");
-        if (i > 0 && triple != !ab.references.empty())
-          r.fail(item, ip, "write every pair of the block as [a, b] or every one as [a, b, reference]");
-        if (!triple) {
-          ab.pairs.push_back(pair(r, item, ip));
-          continue;
-        }
-        ab.pairs.push_back({ref(r, item[0], idx(ip, 0)), ref(r, item[1], idx(ip, 1))});
-        ab.references.push_back(ref(r, item[2], idx(ip, 2)));
-      }
-      return ab;
-    }
-    case BlockType::mushra: {
-      r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "listen_all", "reference",
-                          "conditions", "anchors", "prompt", "feedback"});
-      MushraBlock m;
-      if (n["reference"]) m.reference = ref(r, n["reference"], p + ".reference");
-      m.conditions = refs(r, n["conditions"], p + ".conditions");
-      const YAML::Node a = n["anchors"];
-      if (!a || (a.IsScalar() && a.Scalar() == "auto")) m.auto_anchors = true;  // BS.1534 default
-      else if (a.IsScalar() && a.Scalar() == "none") m.auto_anchors = false;
-      else m.anchors = refs(r, a, p + ".anchors");
-      return m;
-    }
-    case BlockType::magnitude: {
-      r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "modulus", "pairs",
-                          "stimuli", "listen_all", "prompt", "feedback", "modulus_value"});
-      MagnitudeBlock g;
-      g.modulus = pair(r, req("modulus"), p + ".modulus");
-      if (n["modulus_value"]) g.modulus_value = r.positive(n["modulus_value"], p + ".modulus_value");
-      g.stimuli = refs(r, n["stimuli"], p + ".stimuli");
-      const YAML::Node pr = n["pairs"];
-      if (!pr || (pr.IsScalar() && pr.Scalar() == "all")) {
-        g.all_pairs = true;
-      } else if (pr.IsScalar() && pr.Scalar() == "all_with_identical") {
-        g.all_pairs = g.identical_pairs = true;
-      } else {
-        g.pairs = pairs(r, pr, p + ".pairs");
-      }
-      return g;
-    }
-    case BlockType::identify: {
-      r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "stimuli", "labels",
-                          "listen_all", "prompt", "feedback"});
-      return IdentifyBlock{refs(r, n["stimuli"], p + ".stimuli"), texts(r, n["labels"], p + ".labels")};
-    }
-    case BlockType::rating: {
-      r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "listen_all", "stimuli",
-                          "attributes", "prompt", "feedback"});
-      RatingBlock rb;
-      rb.stimuli = refs(r, n["stimuli"], p + ".stimuli");
-      const YAML::Node at = req("attributes");
-      if (!at.IsSequence()) r.fail(at, p + ".attributes", "expected a list of {name, points, low, high}");
-      for (std::size_t i = 0; i < at.size(); ++i) {
-        const std::string ap = idx(p + ".attributes", i);
-        r.check_keys(at[i], ap, {"name", "points", "low", "high"});
-        RatingAttribute a;
-        a.name = r.text(at[i]["name"], ap + ".name");
-        if (at[i]["points"]) a.points = count(r, at[i]["points"], ap + ".points", 2, 101);
-        if (at[i]["low"]) a.low = r.text(at[i]["low"], ap + ".low");
-        if (at[i]["high"]) a.high = r.text(at[i]["high"], ap + ".high");
-        rb.attributes.push_back(a);
-      }
-      return rb;
-    }
-    case BlockType::adjust: {
-      r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "paramset", "sliders",
-                          "target", "listen_all", "prompt", "feedback"});
-      AdjustBlock ad;
-      ad.paramset = ref(r, req("paramset"), p + ".paramset");
-      if (n["target"]) ad.target = ref(r, n["target"], p + ".target");
-      const YAML::Node sl = n["sliders"];
-      if (sl && !sl.IsSequence()) r.fail(sl, p + ".sliders", "expected a list of {key, min, max}");
-      for (std::size_t i = 0; sl && i < sl.size(); ++i) {
-        const std::string sp = idx(p + ".sliders", i);
-        r.check_keys(sl[i], sp, {"key", "min", "max", "label", "low", "high", "show_value"});
-        Slider s{r.text(sl[i]["key"], sp + ".key"), r.number(sl[i]["min"], sp + ".min"),
-                 r.number(sl[i]["max"], sp + ".max"), r.where(sl[i]["key"], sp + ".key")};
-        if (!(s.min < s.max)) r.fail(sl[i]["max"], sp + ".max", "must be greater than min");
-        if (sl[i]["label"]) s.label = r.text(sl[i]["label"], sp + ".label");
-        if (sl[i]["low"]) s.low = r.text(sl[i]["low"], sp + ".low");
-        if (sl[i]["high"]) s.high = r.text(sl[i]["high"], sp + ".high");
-        if (sl[i]["show_value"]) s.show_value = flag(r, sl[i]["show_value"], sp + ".show_value");
-        ad.sliders.push_back(s);
-      }
-      return ad;
-    }
-    case BlockType::staircase: {
-      r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "stimulus",
-                          "reference", "parameter", "start", "step", "down_up", "reversals",
-                          "listen_all", "prompt", "feedback"});
-      StaircaseBlock s;
-      s.stimulus = ref(r, req("stimulus"), p + ".stimulus");
-      if (n["reference"]) s.reference = ref(r, n["reference"], p + ".reference");
-      s.parameter = r.text(req("parameter"), p + ".parameter");
-      s.parameter_where = r.where(n["parameter"], p + ".parameter");
-      s.start = r.number(req("start"), p + ".start");
-      s.step = r.number(req("step"), p + ".step");
-      if (s.step == 0.0) r.fail(n["step"], p + ".step", "must not be 0");
-      if (const YAML::Node du = n["down_up"]) {
-        if (!du.IsSequence() || du.size() != 2) r.fail(du, p + ".down_up", "expected [down, up], e.g. [2, 1]");
-        s.down = count(r, du[0], p + ".down_up[0]", 1, 10);
-        s.up = count(r, du[1], p + ".down_up[1]", 1, 10);
-      }
-      if (n["reversals"]) s.reversals = count(r, n["reversals"], p + ".reversals", 1, 100);
-      return s;
-    }
-    case BlockType::questionnaire: {
-      r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "questions", "prompt"});
-      QuestionnaireBlock q;
-      const YAML::Node qs = n["questions"];
-      if (qs && !qs.IsSequence()) r.fail(qs, p + ".questions", "expected a list of questions");
-      for (std::size_t i = 0; qs && i < qs.size(); ++i) {
-        const std::string qp = idx(p + ".questions", i);
-        Question question;
-        question.id = "q" + std::to_string(i + 1);
-        if (qs[i].IsScalar()) {
-          question.text = r.text(qs[i], qp);
-        } else {
-          r.check_keys(qs[i], qp, {"id", "text", "options"});
-          if (qs[i]["id"]) question.id = r.text(qs[i]["id"], qp + ".id");
-          question.text = r.text(qs[i]["text"], qp + ".text");
-          question.options = texts(r, qs[i]["options"], qp + ".options");
-        }
-        q.questions.push_back(question);
-      }
-      return q;
-    }
+    case BlockType::instructions: return parse_instructions(r, n, p, b);
+    case BlockType::ab: return parse_ab(r, n, p);
+    case BlockType::mushra: return parse_mushra(r, n, p);
+    case BlockType::magnitude: return parse_magnitude(r, n, p, b);
+    case BlockType::identify: return parse_identify(r, n, p);
+    case BlockType::rating: return parse_rating(r, n, p, b);
+    case BlockType::adjust: return parse_adjust(r, n, p, b);
+    case BlockType::staircase: return parse_staircase(r, n, p, b);
+    case BlockType::questionnaire: return parse_questionnaire(r, n, p);
     case BlockType::unknown: break;
   }
   return std::monostate{};

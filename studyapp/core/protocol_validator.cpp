@@ -39,24 +39,31 @@ SourceLocation override_location(const StimulusSource& s, const std::string& key
 
 }  // namespace
 
-std::vector<std::string> validate_protocol(const Protocol& p, const ValidateOptions& options) {
-  std::vector<std::string> problems;
-  const SourceLocation top{p.file, 1, 1};
+namespace {
 
-  std::vector<std::string> names;
-  for (const auto& s : p.stimuli) names.push_back(s.name);
-  auto check_ref = [&](const StimulusRef& r, const std::string& what) {
+// The checks of one protocol, each problem one located line, all collected.
+struct Checker {
+  const Protocol& p;
+  const ValidateOptions& options;
+  Confinement confinement;
+  std::vector<std::string> names;           // every stimulus name, for suggestions
+  std::map<std::string, fs::path> loaded;   // parameter-set stimuli that load cleanly
+  std::vector<std::string> problems;
+
+  Checker(const Protocol& protocol, const ValidateOptions& o)
+      : p(protocol), options(o), confinement(protocol_confinement(protocol, o)) {
+    for (const auto& s : p.stimuli) names.push_back(s.name);
+  }
+
+  void ref(const StimulusRef& r, const std::string& what) {
     const auto& unparsed = p.unparsed_stimuli;  // reported by the parser already
     if (!p.find_stimulus(r.name) && std::find(unparsed.begin(), unparsed.end(), r.name) == unparsed.end())
       problems.push_back(at(r.where, what + "unknown stimulus '" + r.name + "'" + suggest(r.name, names)));
-  };
-
-  const Confinement confinement = protocol_confinement(p, options);
-  std::map<std::string, fs::path> loaded;  // parameter-set stimuli that load cleanly
+  }
 
   // Sliders and staircases set a parameter-set key live: it must load at the values they reach.
-  auto check_setting = [&](const StimulusRef& stim, const std::string& key, double value,
-                           const SourceLocation& where, const std::string& who) {
+  void setting(const StimulusRef& stim, const std::string& key, double value, const SourceLocation& where,
+               const std::string& who) {
     const auto it = loaded.find(stim.name);
     if (it == loaded.end()) return;
     auto overrides = p.find_stimulus(stim.name)->overrides;
@@ -67,29 +74,30 @@ std::vector<std::string> validate_protocol(const Protocol& p, const ValidateOpti
       problems.push_back(at(where, who + "'" + key + "' = " + std::to_string(value) + " on stimulus '" +
                                        stim.name + "': " + e.problem()));
     }
-  };
+  }
 
-  for (const auto& s : p.stimuli) {
-    if (s.kind == StimulusKind::derived) {
-      if (s.implicit) continue;  // its reference is checked where the MUSHRA block names it
-      if (!p.find_stimulus(s.derive_from.name)) {
-        check_ref(s.derive_from, "stimulus '" + s.name + "' derives from ");
-        continue;
-      }
-      // Follow the derive chain; coming back to `s` is a cycle.
-      std::set<std::string> seen{s.name};
-      for (const StimulusSource* cur = p.find_stimulus(s.derive_from.name);
-           cur && cur->kind == StimulusKind::derived; cur = p.find_stimulus(cur->derive_from.name)) {
-        if (!seen.insert(cur->name).second) {
-          problems.push_back(at(s.where, "stimulus '" + s.name + "': derive cycle through '" + cur->name + "'"));
-          break;
-        }
-      }
-      continue;
+  void derived(const StimulusSource& s) {
+    if (s.implicit) return;  // its reference is checked where the MUSHRA block names it
+    if (!p.find_stimulus(s.derive_from.name)) {
+      ref(s.derive_from, "stimulus '" + s.name + "' derives from ");
+      return;
     }
+    // Follow the derive chain; coming back to `s` is a cycle.
+    std::set<std::string> seen{s.name};
+    for (const StimulusSource* cur = p.find_stimulus(s.derive_from.name);
+         cur && cur->kind == StimulusKind::derived; cur = p.find_stimulus(cur->derive_from.name)) {
+      if (!seen.insert(cur->name).second) {
+        problems.push_back(at(s.where, "stimulus '" + s.name + "': derive cycle through '" + cur->name + "'"));
+        return;
+      }
+    }
+  }
+
+  void stimulus(const StimulusSource& s) {
+    if (s.kind == StimulusKind::derived) return derived(s);
     if (const std::string outside = confinement.problem(s.path, p.base_dir); !outside.empty()) {
       problems.push_back(at(s.path_where, "stimulus '" + s.name + "': " + outside));
-      continue;
+      return;
     }
     const fs::path resolved = confinement.resolve(s.path, p.base_dir);
     // A written path can be unreadable in ways other than absence (a name too long, a loop of links).
@@ -98,7 +106,7 @@ std::vector<std::string> validate_protocol(const Protocol& p, const ValidateOpti
       problems.push_back(at(s.path_where, "stimulus '" + s.name + "': file '" + s.path + "' " +
                                               (status_error ? "cannot be read: " + status_error.message()
                                                             : std::string("does not exist"))));
-      continue;
+      return;
     }
     // The checks the stimulus cache makes when a session starts, so that check and start agree.
     try {
@@ -122,21 +130,8 @@ std::vector<std::string> validate_protocol(const Protocol& p, const ValidateOpti
     }
   }
 
-  std::map<std::string, const Block*> ids;
-  for (const auto& b : p.blocks) {
-    const std::string who = "block '" + b.id + "': ";
-    if (b.type == BlockType::unknown) {
-      problems.push_back(at(b.type_where, "unknown block type '" + b.type_name + "'" +
-                                              suggest(b.type_name, block_type_names())));
-      continue;
-    }
-    if (b.id_written) {
-      const auto [it, fresh] = ids.emplace(b.id, &b);
-      if (!fresh)
-        problems.push_back(at(b.id_where, "duplicate block id '" + b.id + "' (first at " +
-                                              format_location(it->second->id_where) + ")"));
-    }
-    for (const auto& r : b.referenced()) check_ref(r, who);
+  // What each block type needs to have (and what its live settings must reach).
+  void block_contents(const Block& b, const std::string& who) {
     auto empty = [&](const std::string& what) { problems.push_back(at(b.where, who + what)); };
     if (const auto* ins = std::get_if<InstructionsBlock>(&b.body); ins && ins->text.empty()) empty("no text");
     if (const auto* ab = std::get_if<AbBlock>(&b.body); ab && ab->pairs.empty()) empty("no pairs");
@@ -162,18 +157,44 @@ std::vector<std::string> validate_protocol(const Protocol& p, const ValidateOpti
       if (s && s->kind != StimulusKind::paramset)
         problems.push_back(at(a->paramset.where, who + "stimulus '" + s->name + "' is not a parameter set"));
       for (const auto& sl : a->sliders)
-        for (double v : {sl.min, sl.max}) check_setting(a->paramset, sl.key, v, sl.where, who);
+        for (double v : {sl.min, sl.max}) setting(a->paramset, sl.key, v, sl.where, who);
     }
     if (const auto* s = std::get_if<StaircaseBlock>(&b.body)) {
       const auto* st = p.find_stimulus(s->stimulus.name);
       if (st && st->kind != StimulusKind::paramset)
         problems.push_back(at(s->stimulus.where, who + "stimulus '" + st->name + "' is not a parameter set"));
-      check_setting(s->stimulus, s->parameter, s->start, s->parameter_where, who);
+      setting(s->stimulus, s->parameter, s->start, s->parameter_where, who);
     }
     if (const auto* q = std::get_if<QuestionnaireBlock>(&b.body); q && q->questions.empty()) empty("no questions");
   }
-  if (p.blocks.empty() && p.unparsed_blocks == 0) problems.push_back(at(top, "the protocol has no blocks"));
-  return problems;
+
+  void block(const Block& b, std::map<std::string, const Block*>& ids) {
+    const std::string who = "block '" + b.id + "': ";
+    if (b.type == BlockType::unknown) {
+      problems.push_back(at(b.type_where, "unknown block type '" + b.type_name + "'" +
+                                              suggest(b.type_name, block_type_names())));
+      return;
+    }
+    if (b.id_written) {
+      const auto [it, fresh] = ids.emplace(b.id, &b);
+      if (!fresh)
+        problems.push_back(at(b.id_where, "duplicate block id '" + b.id + "' (first at " +
+                                              format_location(it->second->id_where) + ")"));
+    }
+    for (const auto& r : b.referenced()) ref(r, who);
+    block_contents(b, who);
+  }
+};
+
+}  // namespace
+
+std::vector<std::string> validate_protocol(const Protocol& p, const ValidateOptions& options) {
+  Checker check(p, options);
+  for (const auto& s : p.stimuli) check.stimulus(s);
+  std::map<std::string, const Block*> ids;
+  for (const auto& b : p.blocks) check.block(b, ids);
+  if (p.blocks.empty() && p.unparsed_blocks == 0) check.problems.push_back(at({p.file, 1, 1}, "the protocol has no blocks"));
+  return std::move(check.problems);
 }
 
 Confinement protocol_confinement(const Protocol& p, const ValidateOptions& options) {
