@@ -9,7 +9,6 @@
 #include "studyapp/core/session.hpp"
 #include "studyapp/core/training_feedback.hpp"
 #include "studyapp/web/browser_answer.hpp"
-#include "studyapp/web/staircase_step.hpp"
 #include "studyapp/web/trial_presentation.hpp"
 #include "studyapp/web/web_token.hpp"
 #include "synthesis/audio_file.hpp"
@@ -120,7 +119,7 @@ WebResponse StudyService::answer(const std::string& token, const std::string& te
     nlohmann::json reply = nlohmann::json::object();
     try {
       if (block.type == BlockType::staircase) {
-        const bool correct = take_staircase_step(session, stored == "B", rt_ms, unix_now_ms());
+        const bool correct = session.staircase_step(stored == "B" ? AbInterval::b : AbInterval::a, rt_ms, unix_now_ms());
         if (block.feedback) reply["feedback"] = {{"correct", correct}, {"message", correct ? "Right." : "Not quite."}};
       } else {
         const auto feedback = block.feedback ? training_feedback(*setup_.protocol, block, trial, stored) : std::nullopt;

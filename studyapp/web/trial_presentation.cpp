@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "studyapp/core/training_feedback.hpp"
-#include "studyapp/web/staircase_step.hpp"
+#include "studyapp/core/session.hpp"
 #include "studyapp/web/web_token.hpp"
 #include "synthesis/csv.hpp"
 
@@ -37,7 +37,7 @@ double slider_value(const Slider& s, int position) { return s.min + (s.max - s.m
 void present_staircase(Presentation& p, Session& session, const StaircaseBlock& block, StimulusCache& cache) {
   StaircaseTrack& track = session.staircase();
   p.step = track.levels().size();
-  p.comparison_in_b = staircase_comparison_in_b(session);  // the same after a resume
+  p.comparison_in_b = session.staircase_comparison() == AbInterval::b;  // drawn by the session: the same after a resume
   const std::string reference = block.reference ? block.reference->name : block.stimulus.name;
   const std::string level = override_text(block.parameter, track.level());
   PresentedSound comparison = sound_of(cache, block.stimulus.name, "", {level});
