@@ -22,6 +22,14 @@ std::string label_of(const std::string& stimulus, const std::vector<std::string>
   return "";
 }
 
+// The first option of every multiple-choice question, "autopilot" for free text.
+QuestionnaireAnswer questionnaire_answer(const QuestionnaireBlock& q) {
+  QuestionnaireAnswer answers;
+  for (std::size_t i = 0; i < q.questions.size(); ++i)
+    answers.answers[question_id(q.questions[i], i)] = q.questions[i].options.empty() ? "autopilot" : q.questions[i].options[0];
+  return answers;
+}
+
 std::string format_number(double v) {
   char buf[40];
   std::snprintf(buf, sizeof buf, "%.17g", v);
@@ -64,132 +72,132 @@ AbInterval SimulatedListener::staircase_choice(const StaircaseBlock& block, doub
   return told_apart ? other(comparison) : comparison;
 }
 
-SimulatedAnswer SimulatedListener::answer(const Block& block, const Trial& trial) {
-  SimulatedAnswer a;
-  std::normal_distribution<double> unit(0.0, 1.0);
-  // Harder decisions (small distances) take longer: 600 ms plus up to 1.5 s.
-  auto rt = [&](double d) { return 600.0 + 1500.0 * std::exp(-d / 3.0) + 100.0 * std::abs(unit(rng_)); };
+double SimulatedListener::reaction_ms(double distance_db, UnitNormal& unit) {
+  // 600 ms plus up to 1.5 s for the smallest distances.
+  return 600.0 + 1500.0 * std::exp(-distance_db / 3.0) + 100.0 * std::abs(unit(rng_));
+}
+
+SimulatedAnswer SimulatedListener::answer_ab(AbMode mode, const Trial& trial, UnitNormal& unit) {
   const auto& s = trial.stimuli;
+  SimulatedAnswer a;
   a.plays = int(s.size());
+  const double d = noisy(distance_db(s.at(0), s.at(1)));
+  a.rt_ms = reaction_ms(d, unit);
+  if (mode == AbMode::same_different) {
+    a.value = SameDifferentAnswer{d > 1.0};
+  } else if (mode == AbMode::abx) {
+    const bool x_is_a = noisy(distance_db(s.at(0), s.at(2))) <= noisy(distance_db(s.at(1), s.at(2)));
+    a.value = ChoiceAnswer{x_is_a ? AbInterval::a : AbInterval::b};
+  } else if (mode == AbMode::bipolar && !trial.reference.empty()) {
+    // B against A as a match to the reference: positive when B sounds closer to it.
+    const double gain = noisy(distance_db(s.at(0), trial.reference)) - noisy(distance_db(s.at(1), trial.reference));
+    a.value = BipolarAnswer{int(std::lround(clamp(gain / 2.0, -3.0, 3.0)))};
+  } else if (mode == AbMode::bipolar) {
+    a.value = BipolarAnswer{int(std::lround(clamp(-d / 2.0 + 0.5 * unit(rng_), -3.0, 3.0)))};
+  } else {  // preference, 2afc: the brighter sound (higher loudness-weighted Bark centroid)
+    const double ca = profile(s.at(0)).centroid_bark + 0.3 * unit(rng_);
+    const double cb = profile(s.at(1)).centroid_bark + 0.3 * unit(rng_);
+    a.value = ChoiceAnswer{ca >= cb ? AbInterval::a : AbInterval::b};
+  }
+  return a;
+}
+
+SimulatedAnswer SimulatedListener::answer_mushra(const Trial& trial, UnitNormal& unit) {
+  const auto& s = trial.stimuli;
+  MushraAnswer scores;
+  double hardest = 1e9;
+  for (const auto& name : s) {
+    const double d = noisy(distance_db(trial.reference, name));
+    hardest = std::min(hardest, d);
+    scores.scores[name] = std::round(clamp(100.0 * std::exp(-d / 6.0), 0.0, 100.0));
+  }
+  return {scores, 4000.0 * double(s.size()) + reaction_ms(hardest, unit), 2 * int(s.size()) + 1};
+}
+
+SimulatedAnswer SimulatedListener::answer_magnitude(const MagnitudeBlock& m, const Trial& trial, UnitNormal& unit) {
+  const auto& s = trial.stimuli;
+  const double d_mod = m.modulus ? distance_db(m.modulus->at(0).name, m.modulus->at(1).name) : 3.0;
+  const double d = noisy(distance_db(s.at(0), s.at(1)));
+  const double ratio = (d + 0.5) / (d_mod + 0.5) * std::exp(0.1 * unit(rng_));
+  const MagnitudeAnswer value{std::max(1.0, std::round(m.modulus_value * ratio))};
+  return {value, reaction_ms(d, unit) + 1500.0, int(s.size())};
+}
+
+SimulatedAnswer SimulatedListener::answer_identify(const IdentifyBlock& block, const Trial& trial, UnitNormal& unit) {
+  // The label of the stimulus the sound seems closest to (itself included), among those whose
+  // label is known; a sound with no known label gets a random one.
+  const auto& labels = block.labels;
+  std::string best;
+  double best_d = 1e300;
+  for (const auto& other : block.stimuli) {
+    const std::string l = label_of(other.name, labels);
+    if (l.empty()) continue;
+    const double d = noisy(distance_db(trial.stimuli.at(0), other.name));
+    if (d < best_d) best_d = d, best = l;
+  }
+  if (best.empty()) best = labels.at(std::size_t(std::uniform_int_distribution<std::size_t>(0, labels.size() - 1)(rng_)));
+  return {IdentifyAnswer{best}, reaction_ms(best_d < 1e300 ? best_d : 0.0, unit), int(trial.stimuli.size())};
+}
+
+SimulatedAnswer SimulatedListener::answer_rating(const RatingBlock& block, const Trial& trial, UnitNormal& unit) {
+  const PerceptualProfile& p = profile(trial.stimuli.at(0));
+  RatingAnswer ratings;
+  for (const auto& attr : block.attributes) {
+    const bool temporal = attr.name.find("dur") != std::string::npos || attr.name.find("ring") != std::string::npos;
+    const double x = temporal ? std::log(std::max(1e-3, p.decay_s) / 0.5) : (p.centroid_bark - 12.0) / 4.0;
+    const double v = 1.0 + double(attr.points - 1) * logistic(x + 0.3 * unit(rng_));
+    ratings.points[attr.name] = int(std::lround(clamp(v, 1.0, double(attr.points))));
+  }
+  return {ratings, reaction_ms(1.0, unit) + 1000.0, int(trial.stimuli.size())};
+}
+
+SimulatedAnswer SimulatedListener::answer_adjust(const AdjustBlock& adj) {
+  // Tunes each slider in turn to the value (of 5 tried) that sounds closest to the block's target
+  // (default: the stimulus as the protocol defines it), as a listener matching a target by ear would.
+  const PerceptualProfile target = profile(adj.target ? adj.target->name : adj.paramset.name);
+  AdjustAnswer values;
+  int plays = 0;
+  for (const auto& slider : adj.sliders) {
+    double best_v = slider.min, best_d = 1e300;
+    for (int k = 0; k < 5; ++k) {
+      const double v = slider.min + (slider.max - slider.min) * (double(k) + 0.5) / 5.0;
+      const std::vector<std::string> set{slider.key + "=" + format_number(v)};
+      const double d = noisy(perceptual_distance_db(
+          target, profile(cache_.hash_with(adj.paramset.name, set), cache_.samples_with(adj.paramset.name, set))));
+      ++plays;
+      if (d < best_d) best_d = d, best_v = v;
+    }
+    values.values[slider.key] = best_v;
+  }
+  return {values, 2500.0 * plays, plays};
+}
+
+SimulatedAnswer SimulatedListener::answer(const Block& block, const Trial& trial) {
+  UnitNormal unit(0.0, 1.0);
   switch (block.type) {
     case BlockType::instructions:
-      a.value = InstructionsAnswer{};
-      a.rt_ms = 3000.0;
-      a.plays = 0;
-      break;
-    case BlockType::ab: {
-      const auto mode = std::get<AbBlock>(block.body).mode;
-      const double d = noisy(distance_db(s.at(0), s.at(1)));
-      a.rt_ms = rt(d);
-      if (mode == AbMode::same_different) {
-        a.value = SameDifferentAnswer{d > 1.0};
-      } else if (mode == AbMode::abx) {
-        const bool x_is_a = noisy(distance_db(s.at(0), s.at(2))) <= noisy(distance_db(s.at(1), s.at(2)));
-        a.value = ChoiceAnswer{x_is_a ? AbInterval::a : AbInterval::b};
-      } else if (mode == AbMode::bipolar && !trial.reference.empty()) {
-        // B against A as a match to the reference: positive when B sounds closer to it.
-        const double gain = noisy(distance_db(s.at(0), trial.reference)) - noisy(distance_db(s.at(1), trial.reference));
-        a.value = BipolarAnswer{int(std::lround(clamp(gain / 2.0, -3.0, 3.0)))};
-      } else if (mode == AbMode::bipolar) {
-        a.value = BipolarAnswer{int(std::lround(clamp(-d / 2.0 + 0.5 * unit(rng_), -3.0, 3.0)))};
-      } else {  // preference, 2afc: the brighter sound (higher loudness-weighted Bark centroid)
-        const double ca = profile(s.at(0)).centroid_bark + 0.3 * unit(rng_);
-        const double cb = profile(s.at(1)).centroid_bark + 0.3 * unit(rng_);
-        a.value = ChoiceAnswer{ca >= cb ? AbInterval::a : AbInterval::b};
-      }
-      break;
-    }
-    case BlockType::mushra: {
-      MushraAnswer scores;
-      double hardest = 1e9;
-      for (const auto& name : s) {
-        const double d = noisy(distance_db(trial.reference, name));
-        hardest = std::min(hardest, d);
-        scores.scores[name] = std::round(clamp(100.0 * std::exp(-d / 6.0), 0.0, 100.0));
-      }
-      a.value = scores;
-      a.rt_ms = 4000.0 * double(s.size()) + rt(hardest);
-      a.plays = 2 * int(s.size()) + 1;
-      break;
-    }
-    case BlockType::magnitude: {
-      const auto& m = std::get<MagnitudeBlock>(block.body);
-      const double d_mod = m.modulus ? distance_db(m.modulus->at(0).name, m.modulus->at(1).name) : 3.0;
-      const double d = noisy(distance_db(s.at(0), s.at(1)));
-      const double ratio = (d + 0.5) / (d_mod + 0.5) * std::exp(0.1 * unit(rng_));
-      a.value = MagnitudeAnswer{std::max(1.0, std::round(m.modulus_value * ratio))};
-      a.rt_ms = rt(d) + 1500.0;
-      break;
-    }
-    case BlockType::identify: {
-      const auto& labels = std::get<IdentifyBlock>(block.body).labels;
-      const auto& stimuli = std::get<IdentifyBlock>(block.body).stimuli;
-      // The label of the stimulus the sound seems closest to (itself included), among those whose
-      // label is known; a sound with no known label gets a random one.
-      std::string best;
-      double best_d = 1e300;
-      for (const auto& other : stimuli) {
-        const std::string l = label_of(other.name, labels);
-        if (l.empty()) continue;
-        const double d = noisy(distance_db(s.at(0), other.name));
-        if (d < best_d) best_d = d, best = l;
-      }
-      if (best.empty()) best = labels.at(std::size_t(std::uniform_int_distribution<std::size_t>(0, labels.size() - 1)(rng_)));
-      a.value = IdentifyAnswer{best};
-      a.rt_ms = rt(best_d < 1e300 ? best_d : 0.0);
-      break;
-    }
-    case BlockType::rating: {
-      const PerceptualProfile& p = profile(s.at(0));
-      RatingAnswer ratings;
-      for (const auto& attr : std::get<RatingBlock>(block.body).attributes) {
-        const bool temporal = attr.name.find("dur") != std::string::npos || attr.name.find("ring") != std::string::npos;
-        const double x = temporal ? std::log(std::max(1e-3, p.decay_s) / 0.5) : (p.centroid_bark - 12.0) / 4.0;
-        const double v = 1.0 + double(attr.points - 1) * logistic(x + 0.3 * unit(rng_));
-        ratings.points[attr.name] = int(std::lround(clamp(v, 1.0, double(attr.points))));
-      }
-      a.value = ratings;
-      a.rt_ms = rt(1.0) + 1000.0;
-      break;
-    }
-    case BlockType::adjust: {
-      // Tunes each slider in turn to the value (of 5 tried) that sounds closest to the block's target
-      // (default: the stimulus as the protocol defines it), as a listener matching a target by ear would.
-      const auto& adj = std::get<AdjustBlock>(block.body);
-      const PerceptualProfile target = profile(adj.target ? adj.target->name : adj.paramset.name);
-      AdjustAnswer values;
-      a.plays = 0;
-      for (const auto& slider : adj.sliders) {
-        double best_v = slider.min, best_d = 1e300;
-        for (int k = 0; k < 5; ++k) {
-          const double v = slider.min + (slider.max - slider.min) * (double(k) + 0.5) / 5.0;
-          const std::vector<std::string> set{slider.key + "=" + format_number(v)};
-          const double d = noisy(perceptual_distance_db(
-              target, profile(cache_.hash_with(adj.paramset.name, set), cache_.samples_with(adj.paramset.name, set))));
-          ++a.plays;
-          if (d < best_d) best_d = d, best_v = v;
-        }
-        values.values[slider.key] = best_v;
-      }
-      a.value = values;
-      a.rt_ms = 2500.0 * a.plays;
-      break;
-    }
-    case BlockType::questionnaire: {
-      const auto& q = std::get<QuestionnaireBlock>(block.body);
-      QuestionnaireAnswer answers;
-      for (std::size_t i = 0; i < q.questions.size(); ++i)
-        answers.answers[question_id(q.questions[i], i)] = q.questions[i].options.empty() ? "autopilot" : q.questions[i].options[0];
-      a.value = answers;
-      a.rt_ms = 5000.0;
-      a.plays = 0;
-      break;
-    }
+      return {InstructionsAnswer{}, 3000.0, 0};
+    case BlockType::ab:
+      return answer_ab(std::get<AbBlock>(block.body).mode, trial, unit);
+    case BlockType::mushra:
+      return answer_mushra(trial, unit);
+    case BlockType::magnitude:
+      return answer_magnitude(std::get<MagnitudeBlock>(block.body), trial, unit);
+    case BlockType::identify:
+      return answer_identify(std::get<IdentifyBlock>(block.body), trial, unit);
+    case BlockType::rating:
+      return answer_rating(std::get<RatingBlock>(block.body), trial, unit);
+    case BlockType::adjust:
+      return answer_adjust(std::get<AdjustBlock>(block.body));
+    case BlockType::questionnaire:
+      return {questionnaire_answer(std::get<QuestionnaireBlock>(block.body)), 5000.0, 0};
     case BlockType::staircase:  // answered step by step through staircase_choice
     case BlockType::unknown:
       break;
   }
-  return a;
+  SimulatedAnswer none;
+  none.plays = int(trial.stimuli.size());
+  return none;
 }
 
 }  // namespace ms

@@ -38,6 +38,17 @@ class SimulatedListener {
   const PerceptualProfile& profile(const std::string& name);
   double noisy(double d);
 
+  // One answer's standard-normal draws share one distribution (it hands out its values in pairs), so
+  // the steps below take it by reference and draw in the order the seeded answers depend on.
+  using UnitNormal = std::normal_distribution<double>;
+  double reaction_ms(double distance_db, UnitNormal& unit);  // harder decisions take longer
+  SimulatedAnswer answer_ab(AbMode mode, const Trial& trial, UnitNormal& unit);
+  SimulatedAnswer answer_mushra(const Trial& trial, UnitNormal& unit);
+  SimulatedAnswer answer_magnitude(const MagnitudeBlock& block, const Trial& trial, UnitNormal& unit);
+  SimulatedAnswer answer_identify(const IdentifyBlock& block, const Trial& trial, UnitNormal& unit);
+  SimulatedAnswer answer_rating(const RatingBlock& block, const Trial& trial, UnitNormal& unit);
+  SimulatedAnswer answer_adjust(const AdjustBlock& block);
+
   StimulusCache& cache_;
   std::mt19937_64 rng_;
   double noise_db_;
