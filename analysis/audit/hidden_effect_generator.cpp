@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdarg>
 #include <cstdio>
 #include <numbers>
 #include <random>
@@ -28,6 +29,191 @@ double strength_of(const std::vector<std::string>& effects, const std::vector<do
   return 0.0;
 }
 
+// printf into a string, for the case's one-line summary.
+[[gnu::format(printf, 1, 2)]] std::string printed(const char* format, ...) {
+  char buf[400];
+  va_list args;
+  va_start(args, format);
+  std::vsnprintf(buf, sizeof buf, format, args);
+  va_end(args);
+  return buf;
+}
+
+using Uniform = std::uniform_real_distribution<double>;
+
+// The object: 10-22 modes, 180 Hz - 7 kHz, at least 4 % apart; Rayleigh damping, or with the
+// damping_law effect a hybrid law with exponent 1 -+ (0.15 .. 0.4), equal to the Rayleigh law at 1 kHz.
+void draw_object(std::mt19937_64& rng, const std::vector<std::string>& effects, const std::vector<double>& strengths,
+                 HiddenCase& hc) {
+  Uniform U(0.0, 1.0);
+  const int modes = 10 + int(U(rng) * 13);
+  std::vector<double> freqs;
+  for (int tries = 0; int(freqs.size()) < modes && tries < 10000; ++tries) {
+    const double f = 180.0 * std::pow(7000.0 / 180.0, U(rng));
+    bool ok = true;
+    for (double g : freqs) ok &= std::abs(f - g) > 0.04 * std::min(f, g);
+    if (ok) freqs.push_back(f);
+  }
+  std::sort(freqs.begin(), freqs.end());
+  const double a1 = 1.0 + 7.0 * U(rng);                   // c = 2d at 0 Hz, 1/s
+  const double c5k = 15.0 + 45.0 * U(rng);                // c at 5 kHz
+  const double lambda5k = std::pow(2.0 * std::numbers::pi * 5000.0, 2);
+  const double a2 = (c5k - a1) / lambda5k;
+  double a3 = 1.0, a2h = a2;
+  if (has(effects, "damping_law")) {
+    const double u = strength_of(effects, strengths, "damping_law");
+    a3 = 1.0 + (U(rng) < 0.5 ? -1.0 : 1.0) * (0.15 + 0.25 * u);
+    const double lg = std::pow(2.0 * std::numbers::pi * 1000.0, 2);
+    a2h = a2 * lg / std::pow(lg, a3);
+  }
+  for (double f : freqs) {
+    const double lambda = std::pow(2.0 * std::numbers::pi * f, 2);
+    const double c = a1 + a2h * std::pow(lambda, a3);
+    hc.object.modes.push_back({f, 0.5 * c, std::pow(10.0, -30.0 * U(rng) / 20.0), 0.0});
+  }
+  hc.summary = printed("seed %llu: %d modes %.0f-%.0f Hz, c = %.2f + %.3g lambda^%.2f", (unsigned long long)hc.seed,
+                       modes, freqs.front(), freqs.back(), a1, a2h, a3);
+}
+
+// Strike gains: stratified over 20 dB (every audit sees soft and hard strikes), in random order.
+std::vector<double> draw_strike_gains(std::mt19937_64& rng, std::size_t strikes) {
+  Uniform U(0.0, 1.0);
+  std::vector<double> gains;
+  for (std::size_t s = 0; s < strikes; ++s)
+    gains.push_back(std::pow(10.0, -20.0 * ((double(s) + U(rng)) / double(strikes)) / 20.0));
+  std::shuffle(gains.begin(), gains.end(), rng);
+  return gains;
+}
+
+// The hidden effects' physical parameters, drawn once per case (none where an effect is not hidden).
+struct EffectParameters {
+  std::vector<std::size_t> doublets;  // modes split in two
+  double split_hz = 0.0, balance = 0.5;
+  double support_mean_per_s = 0.0;    // mean excess decay of the support
+  double tau_hard_s = 0.0;            // contact of the hardest strike
+  double contact_exponent = 0.0;      // tau = tau_hard (g / g_max)^-p
+  double noise_below_db = 110.0;      // under the hardest strike's strongest mode
+  Reverb reverb;
+  AttackTransient transient;
+};
+
+// mode_doublet: 1-2 of the slower-decaying modes below 3 kHz split by 1.5-4.5 Hz.
+void draw_doublets(std::mt19937_64& rng, double u, const ModalModel& object, EffectParameters& e, std::string& summary) {
+  e.split_hz = 1.5 + 3.0 * u;
+  e.balance = 0.35 + 0.3 * Uniform(0.0, 1.0)(rng);
+  std::vector<std::size_t> order;
+  for (std::size_t n = 0; n < object.modes.size(); ++n)
+    if (object.modes[n].freq_hz < 3000.0) order.push_back(n);
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t x, std::size_t y) { return object.modes[x].amp > object.modes[y].amp; });
+  for (std::size_t i = 0; i < order.size() && i < 2; ++i) e.doublets.push_back(order[i]);
+  summary += printed("; doublets: %zu split %.2f Hz", e.doublets.size(), e.split_hz);
+}
+
+// Every hidden effect's parameters, in the order of their draws: the first five from the object's
+// generator, the later ones from their own, so cases hiding only the first five stay as they were.
+EffectParameters draw_effects(std::mt19937_64& rng, const std::vector<std::string>& effects,
+                              const std::vector<double>& strengths, HiddenCase& hc) {
+  EffectParameters e;
+  auto hidden = [&](const char* name) { return has(effects, name); };
+  auto strength = [&](const char* name) { return strength_of(effects, strengths, name); };
+  if (hidden("mode_doublet")) draw_doublets(rng, strength("mode_doublet"), hc.object, e, hc.summary);
+  // support_damping: per strike a hold factor in [0.3, 1] times Exp draws of mean (0.5-2) x median decay.
+  if (hidden("support_damping")) {
+    std::vector<double> d;
+    for (const Mode& m : hc.object.modes) d.push_back(m.decay_per_s);
+    std::nth_element(d.begin(), d.begin() + std::ptrdiff_t(d.size() / 2), d.end());
+    e.support_mean_per_s = (0.5 + 1.5 * strength("support_damping")) * d[d.size() / 2];
+    hc.summary += printed("; support excess mean %.2f 1/s", e.support_mean_per_s);
+  }
+  // contact_duration: raised cosine, tau = tau_hard (g / g_max)^-p.
+  if (hidden("contact_duration")) {
+    const double u = strength("contact_duration");
+    e.tau_hard_s = (0.1 + 0.3 * u) * 1e-3;
+    e.contact_exponent = 0.4 + 0.3 * u;
+    hc.summary += printed("; contact %.2f ms (hardest) x gain^-%.2f", e.tau_hard_s * 1e3, e.contact_exponent);
+  }
+  // Noise: a faint floor always (110 dB below the strongest mode of the hardest strike), or the
+  // noise_floor effect's 40-60 dB below it (fainter noise sits under the gap metric's 60 dB floor).
+  if (hidden("noise_floor")) {
+    e.noise_below_db = 60.0 - 20.0 * strength("noise_floor");
+    hc.summary += printed("; noise %.1f dB below the strongest mode", e.noise_below_db);
+  }
+  std::mt19937_64 rng2(hc.seed * 1000003u + 11u);
+  Uniform U(0.0, 1.0);
+  // reverberation: a white tail of RT60 0.2-0.8 s, -48 .. -34 dB re the direct sound (louder tails
+  // bury the faint modes the extraction needs).
+  if (hidden("reverberation")) {
+    e.reverb = {0.2 + 0.6 * U(rng2), -48.0 + 14.0 * strength("reverberation"), 0, true};
+    hc.summary += printed("; reverb RT60 %.2f s at %.1f dB", e.reverb.rt60_s, e.reverb.level_db);
+  }
+  // residual_transient: a white burst decaying 60 dB in 3-10 ms, -30 .. -15 dB re the direct sound.
+  if (hidden("residual_transient")) {
+    e.transient = {-30.0 + 15.0 * strength("residual_transient"), 3.0 + 7.0 * U(rng2), 0, true};
+    hc.summary += printed("; transient %.1f ms at %.1f dB", e.transient.duration_ms, e.transient.level_db);
+  }
+  return e;
+}
+
+// The draws every strike makes, in turn, from the object's generator (the normal distribution keeps
+// its state from one strike to the next).
+struct StrikeDraws {
+  std::mt19937_64& rng;
+  std::normal_distribution<double> normal{0.0, 1.0};
+  std::exponential_distribution<double> exponential{1.0};
+};
+
+// The object's modes for strike s: scaled to its gain, with the support's excess decay and the split modes.
+ModalModel strike_modes(const HiddenCase& hc, std::size_t s, double scale, const EffectParameters& e,
+                        StrikeDraws& draws) {
+  ModalModel m;
+  const double hold = 0.3 + 0.7 * Uniform(0.0, 1.0)(draws.rng);
+  for (std::size_t n = 0; n < hc.object.modes.size(); ++n) {
+    Mode mode = hc.object.modes[n];
+    mode.amp *= scale * hc.strike_gain[s];
+    if (e.support_mean_per_s > 0.0) mode.decay_per_s += hold * e.support_mean_per_s * draws.exponential(draws.rng);
+    if (std::find(e.doublets.begin(), e.doublets.end(), n) != e.doublets.end()) {
+      Mode hi = mode;
+      mode.freq_hz -= 0.5 * e.split_hz;
+      hi.freq_hz += 0.5 * e.split_hz;
+      const double norm = std::hypot(1.0 - e.balance, e.balance);
+      mode.amp *= (1.0 - e.balance) / norm;
+      hi.amp *= e.balance / norm;
+      m.modes.push_back(hi);
+    }
+    m.modes.push_back(mode);
+  }
+  return m;
+}
+
+// Strike s rendered with its contact, reverberation and transient, after a pre-roll, with the noise floor.
+Recording render_strike(const HiddenCase& hc, std::size_t s, double scale, double gmax, const EffectParameters& e,
+                        const GeneratorOptions& opt, StrikeDraws& draws) {
+  const double fs = opt.sample_rate_hz;
+  const std::size_t pre = std::size_t(opt.pre_roll_s * fs), frames = std::size_t(opt.duration_s * fs);
+  ModalModel m = strike_modes(hc, s, scale, e, draws);
+  Excitation excitation;
+  if (e.tau_hard_s > 0.0) {
+    excitation.shape = PulseShape::raised_cosine;
+    excitation.contact_s = e.tau_hard_s * std::pow(hc.strike_gain[s] / gmax, -e.contact_exponent);
+  }
+  drop_modes_at_or_above(m, 0.5 * fs);
+  std::vector<float> y = render_bank(m, excitation, fs, frames);
+  Reverb reverb = e.reverb;
+  AttackTransient transient = e.transient;
+  reverb.seed = hc.seed * 131u + s;  // separate streams: one seed would correlate the two noises
+  transient.seed = reverb.seed ^ 0x5851f42d4c957f2dULL;
+  add_reverb_and_transient(y, fs, reverb, transient);
+  Recording r;
+  r.name = "strike" + std::to_string(s + 1);
+  r.sample_rate_hz = fs;
+  r.samples.assign(pre + frames, 0.0f);
+  for (std::size_t i = 0; i < frames; ++i) r.samples[pre + i] = y[i];
+  const double sigma = 0.3 * std::pow(10.0, -e.noise_below_db / 20.0);
+  for (float& v : r.samples) v = float(double(v) + sigma * draws.normal(draws.rng));
+  return r;
+}
+
 }  // namespace
 
 HiddenCase generate_hidden_case(std::uint64_t seed, const std::vector<std::string>& effects,
@@ -42,153 +228,15 @@ HiddenCase generate_hidden_case(std::uint64_t seed, const std::vector<std::strin
   hc.effects = effects;
   hc.strengths = strengths;
   std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> U(0.0, 1.0);
-  const double fs = opt.sample_rate_hz;
-
-  // The object: 10-22 modes, 180 Hz - 7 kHz, at least 4 % apart; Rayleigh damping.
-  const int modes = 10 + int(U(rng) * 13);
-  std::vector<double> freqs;
-  for (int tries = 0; int(freqs.size()) < modes && tries < 10000; ++tries) {
-    const double f = 180.0 * std::pow(7000.0 / 180.0, U(rng));
-    bool ok = true;
-    for (double g : freqs) ok &= std::abs(f - g) > 0.04 * std::min(f, g);
-    if (ok) freqs.push_back(f);
-  }
-  std::sort(freqs.begin(), freqs.end());
-  const double a1 = 1.0 + 7.0 * U(rng);                   // c = 2d at 0 Hz, 1/s
-  const double c5k = 15.0 + 45.0 * U(rng);                // c at 5 kHz
-  const double lambda5k = std::pow(2.0 * std::numbers::pi * 5000.0, 2);
-  const double a2 = (c5k - a1) / lambda5k;
-  // damping_law: a hybrid law with exponent 1 -+ (0.15 .. 0.4), equal to the Rayleigh law at 1 kHz.
-  double a3 = 1.0, a2h = a2;
-  if (has(effects, "damping_law")) {
-    const double u = strength_of(effects, strengths, "damping_law");
-    a3 = 1.0 + (U(rng) < 0.5 ? -1.0 : 1.0) * (0.15 + 0.25 * u);
-    const double lg = std::pow(2.0 * std::numbers::pi * 1000.0, 2);
-    a2h = a2 * lg / std::pow(lg, a3);
-  }
-  for (double f : freqs) {
-    const double lambda = std::pow(2.0 * std::numbers::pi * f, 2);
-    const double c = a1 + a2h * std::pow(lambda, a3);
-    hc.object.modes.push_back({f, 0.5 * c, std::pow(10.0, -30.0 * U(rng) / 20.0), 0.0});
-  }
-  char buf[400];
-  std::snprintf(buf, sizeof buf, "seed %llu: %d modes %.0f-%.0f Hz, c = %.2f + %.3g lambda^%.2f",
-                (unsigned long long)seed, modes, freqs.front(), freqs.back(), a1, a2h, a3);
-  hc.summary = buf;
-
-  // Strike gains: stratified over 20 dB (every audit sees soft and hard strikes).
-  const std::size_t S = opt.strikes;
-  for (std::size_t s = 0; s < S; ++s)
-    hc.strike_gain.push_back(std::pow(10.0, -20.0 * ((double(s) + U(rng)) / double(S)) / 20.0));
-  std::shuffle(hc.strike_gain.begin(), hc.strike_gain.end(), rng);
+  draw_object(rng, effects, strengths, hc);
+  hc.strike_gain = draw_strike_gains(rng, opt.strikes);
   const double gmax = *std::max_element(hc.strike_gain.begin(), hc.strike_gain.end());
-
-  // mode_doublet: 1-2 of the slower-decaying modes below 3 kHz split by 1.5-4.5 Hz.
-  std::vector<std::size_t> doublets;
-  double split_hz = 0.0, balance = 0.5;
-  if (has(effects, "mode_doublet")) {
-    const double u = strength_of(effects, strengths, "mode_doublet");
-    split_hz = 1.5 + 3.0 * u;
-    balance = 0.35 + 0.3 * U(rng);
-    std::vector<std::size_t> order;
-    for (std::size_t n = 0; n < hc.object.modes.size(); ++n)
-      if (hc.object.modes[n].freq_hz < 3000.0) order.push_back(n);
-    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) {
-      return hc.object.modes[x].amp > hc.object.modes[y].amp;
-    });
-    for (std::size_t i = 0; i < order.size() && i < 2; ++i) doublets.push_back(order[i]);
-    std::snprintf(buf, sizeof buf, "; doublets: %zu split %.2f Hz", doublets.size(), split_hz);
-    hc.summary += buf;
-  }
-  // support_damping: per strike a hold factor in [0.3, 1] times Exp draws of mean (0.5-2) x median decay.
-  double support_mean = 0.0;
-  if (has(effects, "support_damping")) {
-    std::vector<double> d;
-    for (const Mode& m : hc.object.modes) d.push_back(m.decay_per_s);
-    std::nth_element(d.begin(), d.begin() + std::ptrdiff_t(d.size() / 2), d.end());
-    support_mean = (0.5 + 1.5 * strength_of(effects, strengths, "support_damping")) * d[d.size() / 2];
-    std::snprintf(buf, sizeof buf, "; support excess mean %.2f 1/s", support_mean);
-    hc.summary += buf;
-  }
-  // contact_duration: raised cosine, tau = tau_hard (g / g_max)^-p.
-  double tau_hard = 0.0, p = 0.0;
-  if (has(effects, "contact_duration")) {
-    const double u = strength_of(effects, strengths, "contact_duration");
-    tau_hard = (0.1 + 0.3 * u) * 1e-3;
-    p = 0.4 + 0.3 * u;
-    std::snprintf(buf, sizeof buf, "; contact %.2f ms (hardest) x gain^-%.2f", tau_hard * 1e3, p);
-    hc.summary += buf;
-  }
-  // Noise: a faint floor always (110 dB below the strongest mode of the hardest strike), or the
-  // noise_floor effect's 40-60 dB below it (fainter noise sits under the gap metric's 60 dB floor).
+  const EffectParameters e = draw_effects(rng, effects, strengths, hc);
   double amax = 0.0;
   for (const Mode& m : hc.object.modes) amax = std::max(amax, m.amp);
   const double scale = 0.3 / (amax * gmax);  // the hardest strike's strongest mode at 0.3 full scale
-  double noise_below_db = 110.0;
-  if (has(effects, "noise_floor")) {
-    noise_below_db = 60.0 - 20.0 * strength_of(effects, strengths, "noise_floor");
-    std::snprintf(buf, sizeof buf, "; noise %.1f dB below the strongest mode", noise_below_db);
-    hc.summary += buf;
-  }
-  const double sigma = 0.3 * std::pow(10.0, -noise_below_db / 20.0);
-  // The later effects draw from their own generator: cases hiding only the first five stay as they were.
-  std::mt19937_64 rng2(seed * 1000003u + 11u);
-  // reverberation: a white tail of RT60 0.2-0.8 s, -48 .. -34 dB re the direct sound (louder tails
-  // bury the faint modes the extraction needs).
-  Reverb reverb;
-  if (has(effects, "reverberation")) {
-    reverb = {0.2 + 0.6 * U(rng2), -48.0 + 14.0 * strength_of(effects, strengths, "reverberation"), 0, true};
-    std::snprintf(buf, sizeof buf, "; reverb RT60 %.2f s at %.1f dB", reverb.rt60_s, reverb.level_db);
-    hc.summary += buf;
-  }
-  // residual_transient: a white burst decaying 60 dB in 3-10 ms, -30 .. -15 dB re the direct sound.
-  AttackTransient transient;
-  if (has(effects, "residual_transient")) {
-    transient = {-30.0 + 15.0 * strength_of(effects, strengths, "residual_transient"), 3.0 + 7.0 * U(rng2), 0, true};
-    std::snprintf(buf, sizeof buf, "; transient %.1f ms at %.1f dB", transient.duration_ms, transient.level_db);
-    hc.summary += buf;
-  }
-
-  const std::size_t pre = std::size_t(opt.pre_roll_s * fs), frames = std::size_t(opt.duration_s * fs);
-  std::normal_distribution<double> N(0.0, 1.0);
-  std::exponential_distribution<double> E(1.0);
-  for (std::size_t s = 0; s < S; ++s) {
-    ModalModel m;
-    const double hold = 0.3 + 0.7 * U(rng);
-    for (std::size_t n = 0; n < hc.object.modes.size(); ++n) {
-      Mode mode = hc.object.modes[n];
-      mode.amp *= scale * hc.strike_gain[s];
-      if (support_mean > 0.0) mode.decay_per_s += hold * support_mean * E(rng);
-      if (std::find(doublets.begin(), doublets.end(), n) != doublets.end()) {
-        Mode hi = mode;
-        mode.freq_hz -= 0.5 * split_hz;
-        hi.freq_hz += 0.5 * split_hz;
-        const double norm = std::hypot(1.0 - balance, balance);
-        mode.amp *= (1.0 - balance) / norm;
-        hi.amp *= balance / norm;
-        m.modes.push_back(hi);
-      }
-      m.modes.push_back(mode);
-    }
-    Excitation e;
-    if (tau_hard > 0.0) {
-      e.shape = PulseShape::raised_cosine;
-      e.contact_s = tau_hard * std::pow(hc.strike_gain[s] / gmax, -p);
-    }
-    drop_modes_at_or_above(m, 0.5 * fs);
-    std::vector<float> y = render_bank(m, e, fs, frames);
-    reverb.seed = seed * 131u + s;  // separate streams: one seed would correlate the two noises
-    transient.seed = reverb.seed ^ 0x5851f42d4c957f2dULL;
-    add_reverb_and_transient(y, fs, reverb, transient);
-    Recording r;
-    r.name = "strike" + std::to_string(s + 1);
-    r.sample_rate_hz = fs;
-    r.samples.assign(pre + frames, 0.0f);
-    for (std::size_t i = 0; i < frames; ++i) r.samples[pre + i] = y[i];
-    for (float& v : r.samples) v = float(double(v) + sigma * N(rng));
-    hc.recordings.push_back(std::move(r));
-  }
+  StrikeDraws draws{rng};
+  for (std::size_t s = 0; s < opt.strikes; ++s) hc.recordings.push_back(render_strike(hc, s, scale, gmax, e, opt, draws));
   return hc;
 }
 

@@ -193,6 +193,140 @@ struct ModalFit {
   NoiseProfile profile;              // coloured floor per band (empty when white)
 };
 
+// What every step of one fit shares: the signal, the noise it is judged against and the options.
+struct FitContext {
+  const std::vector<double>& signal;
+  double fs;
+  std::size_t frames;        // samples in signal
+  std::size_t early;         // samples the wide bands scan
+  double sigma;              // white-noise std (floored on noiseless input)
+  double noise_energy;       // sigma^2
+  double peak;               // the signal's largest magnitude
+  double top_hz;             // highest frequency scanned
+  const NoiseProfile& noise;
+  const NoiseEnvelope& tail;
+  const ExtractOptions& options;
+  RefineOptions refine;
+};
+
+// Under a tail a component is judged by what it explains with the tail's weights, which needs the
+// residual of the fit it belongs to (empty without a tail: then its energy alone decides).
+std::vector<double> residual_of(const FitContext& f, const std::vector<double>& signal,
+                                const std::vector<DampedComponent>& c) {
+  return f.tail.flat() ? std::vector<double>{} : subtract_components(signal, c, signal.size());
+}
+
+bool audible(const FitContext& f, const DampedComponent& c, const std::vector<double>& residual) {
+  const double var = std::max(f.noise_energy, f.noise.variance_at(c.s.imag() * f.fs / kTwoPi));
+  double snr = component_energy(c, 0, f.frames) / var;
+  if (!residual.empty()) snr = std::min(snr, f.tail.weighted_fit_gain(residual, c));
+  return 10.0 * std::log10(snr) >= f.options.min_snr_db;
+}
+
+// Candidates under the noise go at once; at most kMaxCandidates (strongest) survive a scan, which
+// bounds the joint fit on pathological input (e.g. dense stationary tones).
+void keep_audible(const FitContext& f, const std::vector<double>& signal, std::vector<DampedComponent>& c) {
+  constexpr std::size_t kMaxCandidates = 240;
+  const std::vector<double> residual = residual_of(f, signal, c);
+  std::erase_if(c, [&](const DampedComponent& m) { return !audible(f, m, residual); });
+  if (c.size() > kMaxCandidates) {
+    std::sort(c.begin(), c.end(), [&](const auto& a, const auto& b) {
+      return component_energy(a, 0, f.frames) > component_energy(b, 0, f.frames);
+    });
+    c.resize(kMaxCandidates);
+  }
+}
+
+// Narrow bands over the whole duration (slow and moderately damped modes), then wide bands over
+// the early part (fast modes the narrow masks' kernels hide), each on what is still unexplained.
+void scan(const FitContext& f, const std::vector<double>& signal, std::vector<DampedComponent>& found) {
+  const ExtractOptions& o = f.options;
+  const std::size_t before = found.size();
+  {
+    SubbandSplitter split(signal, f.fs, f.sigma, &f.noise);
+    scan_bands(split, narrow_layout(f.top_hz, o.narrow_band_hz), f.fs, o.max_duration_s, o.min_freq_hz,
+               o.hum_decay_per_s, 4.0, f.tail, found);
+  }
+  std::vector<DampedComponent> with_slow(found.begin() + std::ptrdiff_t(before), found.end());
+  fit_amplitudes(signal, with_slow);
+  keep_audible(f, signal, with_slow);
+  found.resize(before);
+  found.insert(found.end(), with_slow.begin(), with_slow.end());
+  const std::vector<double> rest = subtract_components(signal, with_slow, f.early);
+  std::vector<DampedComponent> fast;
+  SubbandSplitter split(rest, f.fs, f.sigma, &f.noise);
+  scan_bands(split, wide_layout(f.top_hz, o.wide_band_hz), f.fs, o.wide_window_s, o.min_freq_hz, o.hum_decay_per_s,
+             o.fast_threshold_factor, f.tail, fast);
+  std::erase_if(fast, [&](const DampedComponent& c) { return -c.s.real() * f.fs < o.fast_decay_per_s; });
+  fit_amplitudes(rest, fast);
+  keep_audible(f, rest, fast);
+  found.insert(found.end(), fast.begin(), fast.end());
+}
+
+// Greedy pursuit on the residual of the joint fit (replaces a second sub-band scan: it finds the
+// crowded, heavily damped modes the bands miss, at a fraction of the cost).
+PursuitOptions pursuit_options(const FitContext& f) {
+  PursuitOptions po;
+  po.min_freq_hz = f.options.min_freq_hz;
+  po.max_freq_hz = f.top_hz;
+  po.noise_variance = f.noise_energy;
+  po.noise = &f.noise;
+  po.tail = &f.tail;
+  po.max_atoms = f.options.pursuit_atoms;
+  return po;
+}
+
+// Hum, contact transients, out-of-range or overshooting poles, and what the noise hides.
+void drop_unfit(const FitContext& f, std::vector<DampedComponent>& c) {
+  const ExtractOptions& o = f.options;
+  const std::vector<double> residual = residual_of(f, f.signal, c);
+  std::erase_if(c, [&](const DampedComponent& m) {
+    const double d = -m.s.real() * f.fs, freq = m.s.imag() * f.fs / kTwoPi;
+    if (d < o.hum_decay_per_s || d > o.max_decay_per_s || freq < o.min_freq_hz || freq >= 0.5 * f.fs) return true;
+    return overshoots(m, f.peak) || !audible(f, m, residual);
+  });
+}
+
+// The unfit go twice (between them the poles are refined, after them the amplitudes re-solved);
+// amplitudes re-solved on fewer poles can still blow up where a cancelling group remains.
+void clean_up(const FitContext& f, std::vector<DampedComponent>& comps) {
+  for (int pass = 0; pass < 2; ++pass) {
+    drop_unfit(f, comps);
+    if (pass == 0) refine_poles(f.signal, comps, f.refine);
+    else fit_amplitudes(f.signal, comps);
+  }
+  if (std::erase_if(comps, [&](const DampedComponent& c) { return overshoots(c, f.peak); }) > 0)
+    fit_amplitudes(f.signal, comps);
+}
+
+// Second start for the crowded low band (optional, ~70 % more time): the joint fit settles in a
+// local minimum when heavily damped low modes overlap (ESPRIT's bands merge them first). Rebuild
+// that band from scratch by pursuit against everything else, refit all, and keep whichever start
+// explains the recording better after the Bayesian information criterion's price per mode
+// (4 ln N noise variances).
+void restart_low_band(const FitContext& f, const PursuitOptions& po, std::vector<DampedComponent>& comps) {
+  constexpr double kLowBandHz = 700.0, kLowMinDecay = 20.0;
+  std::vector<DampedComponent> alt;
+  for (const auto& c : comps)
+    if (c.s.imag() * f.fs / kTwoPi >= kLowBandHz || -c.s.real() * f.fs < kLowMinDecay) alt.push_back(c);
+  const std::size_t low = comps.size() - alt.size();
+  if (low == 0) return;
+  const double price = 4.0 * std::log(double(f.frames)) * f.noise_energy;
+  auto cost = [&](const std::vector<DampedComponent>& all) {
+    double e = 0.0;
+    for (double v : subtract_components(f.signal, all, f.frames)) e += v * v;
+    return e + price * double(all.size());
+  };
+  PursuitOptions band = po;
+  band.max_freq_hz = kLowBandHz;
+  band.max_atoms = int(low) + 4;
+  damped_pursuit(f.signal, f.fs, alt, band);
+  refine_poles(f.signal, alt, f.refine);
+  drop_unfit(f, alt);
+  fit_amplitudes(f.signal, alt);
+  if (cost(alt) < cost(comps)) comps = std::move(alt);
+}
+
 ModalFit fit_modes(const std::vector<double>& x, double fs, std::size_t start, double noise_sigma,
                    const ExtractOptions& options) {
   ModalFit fit;
@@ -203,130 +337,36 @@ ModalFit fit_modes(const std::vector<double>& x, double fs, std::size_t start, d
   // A floor keeps the order selection sane on noiseless (synthetic) input.
   double peak = 0.0;
   for (double v : s) peak = std::max(peak, std::abs(v));
-  const double sigma = std::max(noise_sigma, std::pow(10.0, -options.max_dynamic_range_db / 20.0) * peak);
-  fit.sigma = sigma;
-  const double top_hz = 0.49 * fs;
-
-  const std::size_t early = std::min(frames, std::size_t(options.wide_window_s * fs));
-  RefineOptions ro;
-  ro.max_iterations = options.refine_iterations;
-  // Narrow bands over the whole duration (slow and moderately damped modes), then wide bands over
-  // the early part (fast modes the narrow masks' kernels hide), each on what is still unexplained.
-  const double noise_energy = sigma * sigma;
+  fit.sigma = std::max(noise_sigma, std::pow(10.0, -options.max_dynamic_range_db / 20.0) * peak);
+  const double noise_energy = fit.sigma * fit.sigma;
   // Coloured noise: per-band levels from the recording's tail (noise_floor.hpp).
-  fit.profile = estimate_noise_profile(x, fs, sigma);
-  const NoiseProfile& noise = fit.profile;
+  fit.profile = estimate_noise_profile(x, fs, fit.sigma);
   // A room tail: noise that decays after the strike (noise_envelope.hpp).
   fit.noise = options.room_tail ? estimate_noise_envelope(s, fs, noise_energy) : NoiseEnvelope{0, {}, noise_energy};
-  const NoiseEnvelope& tail = fit.noise;
-  // Under a tail a component is judged by what it explains with the tail's weights, which needs the
-  // residual of the fit it belongs to (empty without a tail: then its energy alone decides).
-  auto residual_of = [&](const std::vector<double>& signal, const std::vector<DampedComponent>& c) {
-    return tail.flat() ? std::vector<double>{} : subtract_components(signal, c, signal.size());
-  };
-  auto audible = [&](const DampedComponent& c, const std::vector<double>& residual) {
-    const double var = std::max(noise_energy, noise.variance_at(c.s.imag() * fs / kTwoPi));
-    double snr = component_energy(c, 0, frames) / var;
-    if (!residual.empty()) snr = std::min(snr, tail.weighted_fit_gain(residual, c));
-    return 10.0 * std::log10(snr) >= options.min_snr_db;
-  };
-  // Candidates under the noise go at once; at most kMaxCandidates (strongest) survive a scan, which
-  // bounds the joint fit on pathological input (e.g. dense stationary tones).
-  constexpr std::size_t kMaxCandidates = 240;
-  auto keep_audible = [&](const std::vector<double>& signal, std::vector<DampedComponent>& c) {
-    const std::vector<double> residual = residual_of(signal, c);
-    std::erase_if(c, [&](const DampedComponent& m) { return !audible(m, residual); });
-    if (c.size() > kMaxCandidates) {
-      std::sort(c.begin(), c.end(), [&](const auto& a, const auto& b) {
-        return component_energy(a, 0, frames) > component_energy(b, 0, frames);
-      });
-      c.resize(kMaxCandidates);
-    }
-  };
-  auto scan = [&](const std::vector<double>& signal, std::vector<DampedComponent>& found) {
-    const std::size_t before = found.size();
-    {
-      SubbandSplitter split(signal, fs, sigma, &noise);
-      scan_bands(split, narrow_layout(top_hz, options.narrow_band_hz), fs, options.max_duration_s,
-                 options.min_freq_hz, options.hum_decay_per_s, 4.0, tail, found);
-    }
-    std::vector<DampedComponent> with_slow(found.begin() + std::ptrdiff_t(before), found.end());
-    fit_amplitudes(signal, with_slow);
-    keep_audible(signal, with_slow);
-    found.resize(before);
-    found.insert(found.end(), with_slow.begin(), with_slow.end());
-    const std::vector<double> rest = subtract_components(signal, with_slow, early);
-    std::vector<DampedComponent> fast;
-    SubbandSplitter split(rest, fs, sigma, &noise);
-    scan_bands(split, wide_layout(top_hz, options.wide_band_hz), fs, options.wide_window_s,
-               options.min_freq_hz, options.hum_decay_per_s, options.fast_threshold_factor, tail, fast);
-    std::erase_if(fast, [&](const DampedComponent& c) { return -c.s.real() * fs < options.fast_decay_per_s; });
-    fit_amplitudes(rest, fast);
-    keep_audible(rest, fast);
-    found.insert(found.end(), fast.begin(), fast.end());
-  };
+  RefineOptions ro;
+  ro.max_iterations = options.refine_iterations;
+  const FitContext f{.signal = s,
+                     .fs = fs,
+                     .frames = frames,
+                     .early = std::min(frames, std::size_t(options.wide_window_s * fs)),
+                     .sigma = fit.sigma,
+                     .noise_energy = noise_energy,
+                     .peak = peak,
+                     .top_hz = 0.49 * fs,
+                     .noise = fit.profile,
+                     .tail = fit.noise,
+                     .options = options,
+                     .refine = ro};
   std::vector<DampedComponent>& comps = fit.comps;
-  scan(s, comps);
+  scan(f, s, comps);
   refine_poles(s, comps, ro);
   merge_duplicates(comps, fs);
   drop_cancelling(comps, frames, options.fast_decay_per_s / fs);
   std::erase_if(comps, [&](const DampedComponent& c) { return overshoots(c, peak); });
-  // Greedy pursuit on the residual of the joint fit (replaces a second sub-band scan: it finds the
-  // crowded, heavily damped modes the bands miss, at a fraction of the cost).
-  PursuitOptions po;
-  po.min_freq_hz = options.min_freq_hz;
-  po.max_freq_hz = top_hz;
-  po.noise_variance = noise_energy;
-  po.noise = &noise;
-  po.tail = &tail;
-  po.max_atoms = options.pursuit_atoms;
+  const PursuitOptions po = pursuit_options(f);
   damped_pursuit(s, fs, comps, po);
-  // Hum, contact transients, out-of-range or overshooting poles, and what the noise hides.
-  auto drop_unfit = [&](std::vector<DampedComponent>& c) {
-    const std::vector<double> residual = residual_of(s, c);
-    std::erase_if(c, [&](const DampedComponent& m) {
-      const double d = -m.s.real() * fs, f = m.s.imag() * fs / kTwoPi;
-      if (d < options.hum_decay_per_s || d > options.max_decay_per_s || f < options.min_freq_hz || f >= 0.5 * fs)
-        return true;
-      return overshoots(m, peak) || !audible(m, residual);
-    });
-  };
-  for (int pass = 0; pass < 2; ++pass) {
-    drop_unfit(comps);
-    if (pass == 0) refine_poles(s, comps, ro);
-    else fit_amplitudes(s, comps);
-  }
-  // Amplitudes re-solved on fewer poles can still blow up where a cancelling group remains.
-  if (std::erase_if(comps, [&](const DampedComponent& c) { return overshoots(c, peak); }) > 0)
-    fit_amplitudes(s, comps);
-  // Second start for the crowded low band (optional, ~70 % more time): the joint fit settles in a
-  // local minimum when heavily damped low modes overlap (ESPRIT's bands merge them first). Rebuild
-  // that band from scratch by pursuit against everything else, refit all, and keep whichever start
-  // explains the recording better after the Bayesian information criterion's price per mode
-  // (4 ln N noise variances).
-  if (options.low_band_restart) {
-    constexpr double kLowBandHz = 700.0, kLowMinDecay = 20.0;
-    std::vector<DampedComponent> alt;
-    for (const auto& c : comps)
-      if (c.s.imag() * fs / kTwoPi >= kLowBandHz || -c.s.real() * fs < kLowMinDecay) alt.push_back(c);
-    const std::size_t low = comps.size() - alt.size();
-    const double price = 4.0 * std::log(double(frames)) * noise_energy;
-    auto cost = [&](const std::vector<DampedComponent>& all) {
-      double e = 0.0;
-      for (double v : subtract_components(s, all, frames)) e += v * v;
-      return e + price * double(all.size());
-    };
-    if (low > 0) {
-      PursuitOptions band = po;
-      band.max_freq_hz = kLowBandHz;
-      band.max_atoms = int(low) + 4;
-      damped_pursuit(s, fs, alt, band);
-      refine_poles(s, alt, ro);
-      drop_unfit(alt);
-      fit_amplitudes(s, alt);
-      if (cost(alt) < cost(comps)) comps = std::move(alt);
-    }
-  }
+  clean_up(f, comps);
+  if (options.low_band_restart) restart_low_band(f, po, comps);
   return fit;
 }
 
