@@ -7,6 +7,7 @@ cd "$(dirname "$0")/.."
 packages=(build-essential cmake ninja-build pkg-config
           libsndfile1-dev libeigen3-dev libboost-dev libboost-math-dev libfftw3-dev libyaml-cpp-dev
           libcli11-dev nlohmann-json3-dev libssl-dev libsqlite3-dev
+          libpq-dev postgresql-15  # the PostgreSQL back end of the results store; the server for its tests
           libgtest-dev libgmock-dev libbenchmark-dev
           qt6-base-dev qt6-charts-dev qt6-svg-dev qt6-multimedia-dev libgl-dev
           xvfb xauth  # the GUI screenshot test runs under xvfb-run when it is there

@@ -1,6 +1,12 @@
 #!/usr/bin/env bash
 # Quick start 2: set up, build with warnings as errors, run every test suite through CTest.
+# A throw-away PostgreSQL 15 server (scripts/test_postgres.sh) runs the results store's PostgreSQL
+# tests; it is stopped on exit, however the script ends.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/setup.sh -DMODALSTUDY_WERROR=ON
+source scripts/test_postgres.sh
+trap stop_test_postgres EXIT
+trap 'exit 130' INT TERM
+start_test_postgres
 ctest --test-dir build --output-on-failure -j"$(nproc)"

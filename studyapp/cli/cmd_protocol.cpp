@@ -1,6 +1,8 @@
 // modalstudy protocol check PROTOCOL.yaml [--allow-outside] [--json]
 // modalstudy protocol schedule PROTOCOL.yaml --participant ID [--json]
-// Validates a study protocol (every problem, one line each, exit 2) or prints a participant's trials.
+// modalstudy protocol import-webmushra CONFIG.yaml -o PROTOCOL.yaml [--json]
+// Validates a study protocol (every problem, one line each, exit 2), prints a participant's trials, or
+// turns a webMUSHRA experiment config into a protocol.
 #include <nlohmann/json.hpp>
 
 #include <cstdlib>
@@ -9,6 +11,8 @@
 #include "studyapp/cli/commands.hpp"
 #include "studyapp/core/protocol_validator.hpp"
 #include "studyapp/core/schedule.hpp"
+#include "studyapp/core/webmushra_import.hpp"
+#include "synthesis/atomic_file.hpp"
 #include "synthesis/input_error.hpp"
 
 namespace ms::cli {
@@ -16,7 +20,7 @@ namespace ms::cli {
 namespace {
 
 struct ProtocolOptions {
-  std::string file, participant;
+  std::string file, participant, output;
   bool allow_outside = false, json = false;
 };
 
@@ -77,11 +81,25 @@ void run_schedule(const ProtocolOptions& o) {
   }
 }
 
+// What could not be carried over goes to stderr, one line each; the protocol is written only once it
+// parses and validates.
+void run_import_webmushra(const ProtocolOptions& o) {
+  const WebMushraImport imported = import_webmushra(o.file, o.output);
+  write_file_atomically(o.output, imported.protocol_yaml);
+  if (o.json) {
+    std::cout << nlohmann::json{{"protocol", o.output}, {"notes", imported.notes}}.dump(2) << "\n";
+    return;
+  }
+  for (const std::string& n : imported.notes) std::cerr << "note: " << n << "\n";
+  std::cout << "wrote " << o.output << " (" << imported.notes.size() << " notes: what webMUSHRA does that it does not)\n";
+}
+
 }  // namespace
 
 void register_protocol(CLI::App& app) {
   auto opts = std::make_shared<ProtocolOptions>();
-  auto* cmd = app.add_subcommand("protocol", "Check a study protocol or print a participant's trial schedule");
+  auto* cmd = app.add_subcommand("protocol", "Check a study protocol, print a participant's trial schedule, or import a "
+                                             "webMUSHRA config");
   cmd->require_subcommand(1);
   auto* check = cmd->add_subcommand("check", "Report every problem of a protocol (exit 2 if any)");
   check->add_option("protocol", opts->file, "Protocol YAML")->required();
@@ -93,6 +111,12 @@ void register_protocol(CLI::App& app) {
   sched->add_option("--participant", opts->participant, "Participant id (seeds the order)")->required();
   sched->add_flag("--json", opts->json, "Print the schedule as JSON");
   sched->callback([opts] { run_schedule(*opts); });
+  auto* wm = cmd->add_subcommand("import-webmushra", "Turn a webMUSHRA experiment config into a protocol");
+  wm->add_option("config", opts->file, "webMUSHRA config YAML (audio paths relative to webMUSHRA's root folder)")
+      ->required();
+  wm->add_option("-o,--output", opts->output, "Protocol YAML to write (stimulus paths relative to it)")->required();
+  wm->add_flag("--json", opts->json, "Print {protocol, notes} as JSON");
+  wm->callback([opts] { run_import_webmushra(*opts); });
 }
 
 }  // namespace ms::cli

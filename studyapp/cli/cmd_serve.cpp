@@ -20,7 +20,8 @@ void register_serve(CLI::App& app) {
   auto opt = std::make_shared<Options>();
   CLI::App* cmd = app.add_subcommand("serve", "Run a study in participants' browsers (HTTP; TLS by a reverse proxy)");
   cmd->add_option("protocol", opt->serve.protocol_path, "Protocol file (YAML)")->required();
-  cmd->add_option("--db", opt->serve.db_path, "Results database (default <protocol dir>/results/<study>.sqlite)");
+  cmd->add_option("--db", opt->serve.db_path, "Results database: a file (default <protocol dir>/results/<study>.sqlite)"
+                 " or a postgresql://user@host:port/dbname URI");
   cmd->add_option("--host", opt->serve.http.host, "Address to listen on (default 127.0.0.1: this machine only)");
   cmd->add_option("--port", opt->port, "Port (default 8080; 0 = any free port)")->check(CLI::Range(0, 65535));
   auto* n = cmd->add_option("--participants", opt->serve.participants, "Issue N participant links (kept in --links)")

@@ -9,6 +9,7 @@
 #include "studyapp/core/session.hpp"
 #include "studyapp/core/simulated_listener.hpp"
 #include "studyapp/core/stimulus_cache.hpp"
+#include "studyapp/core/store_location.hpp"
 #include "synthesis/input_error.hpp"
 #include "synthesis/yaml_reader.hpp"
 
@@ -46,7 +47,8 @@ AutopilotSummary run_autopilot(const AutopilotOptions& o, const std::function<vo
   });
   AutopilotSummary summary;
   summary.db_path = o.db_path.empty() ? default_db_path(o.protocol_path, protocol.study) : o.db_path;
-  if (const auto dir = fs::path(summary.db_path).parent_path(); !dir.empty()) fs::create_directories(dir);
+  if (const auto dir = fs::path(summary.db_path).parent_path(); !dir.empty() && !is_postgres_uri(summary.db_path))
+    fs::create_directories(dir);
   Session session(protocol, text.str(), o.participant, summary.db_path, cache.hashes(), unix_now_ms(),
                   SessionStart{o.new_session, true});
   summary.warnings = session.warnings();

@@ -9,6 +9,7 @@
 
 #include "studyapp/core/protocol_parser.hpp"
 #include "studyapp/core/results_store.hpp"
+#include "studyapp/core/store_location.hpp"
 #include "studyapp/core/tidy_tables.hpp"
 #include "synthesis/atomic_file.hpp"
 #include "synthesis/csv.hpp"
@@ -125,7 +126,7 @@ ExportSummary export_results(const std::string& db_path, const std::string& out_
                        {"export_personal", s.export_personal},
                        {"responses", per_study[s.id]}});
   const nlohmann::json meta = {
-      {"source", std::filesystem::path(db_path).filename().string()},
+      {"source", is_postgres_uri(db_path) ? store.path() : std::filesystem::path(db_path).filename().string()},
       {"schema_version", ResultsStore::kSchemaVersion},
       {"studies", studies},
       {"counts",

@@ -1,11 +1,10 @@
 // participant_status: the latest session of one participant, read-only; see participant_status.hpp.
 #include "studyapp/core/participant_status.hpp"
 
-#include <filesystem>
-
 #include "studyapp/core/export.hpp"
 #include "studyapp/core/participant_id.hpp"
 #include "studyapp/core/results_store.hpp"
+#include "studyapp/core/store_location.hpp"
 
 namespace ms {
 
@@ -13,8 +12,7 @@ ParticipantStatus participant_status(const std::string& db_path, const std::stri
                                      const std::string& participant) {
   ParticipantStatus out;
   out.participant = normalize_participant_id(participant);
-  std::error_code ec;
-  if (!std::filesystem::exists(db_path, ec) || std::filesystem::file_size(db_path, ec) == 0) return out;
+  if (!store_exists(db_path)) return out;
   const ResultsStore store(db_path, ResultsStore::Mode::read_only);
   out.look_alikes = look_alike_ids(out.participant, store.participant_codes(study));
   const auto pid = store.find_participant(study, out.participant);

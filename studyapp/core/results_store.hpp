@@ -1,17 +1,20 @@
-// ResultsStore: one SQLite file holding a study's participants, sessions, trials, responses and
-// playback events. Every response is durable (committed, fsynced) before record_response returns.
-// The file is created atomically (schema built in a temporary file, then linked into place), checked
-// on every open (a damaged file is refused by name and never written to), and each running session
-// is leased to one process (see session_lease.hpp).
+// ResultsStore: a study's participants, sessions, trials, responses and playback events, in one SQLite
+// file (sqlite_store.hpp, the embedded default) or one PostgreSQL database shared by many booths and
+// servers (postgres_store.hpp), chosen by the location (store_location.hpp); both behave the same.
+// Every response is durable (committed, on disk) before record_response returns. A store is checked
+// on every open (a damaged or foreign one is refused by name and never written to), and each running
+// session is leased to one process (see session_lease.hpp), the lease checked inside the database.
 #pragma once
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "studyapp/core/session_lease.hpp"
-#include "studyapp/core/sqlite_handle.hpp"
+#include "studyapp/core/store_connection.hpp"
+#include "studyapp/core/store_error.hpp"
 #include "synthesis/input_error.hpp"
 
 namespace ms {
@@ -139,17 +142,16 @@ struct TrialRow : TrialContext {
 
 class ResultsStore {
  public:
-  // 2: sessions.autopilot and the leases table (a version-1 file is migrated when opened for writing).
-  static constexpr int kSchemaVersion = 2;
-  static constexpr int kApplicationId = 0x4d535444;  // "MSTD" in PRAGMA application_id
+  static constexpr int kSchemaVersion = kStoreSchemaVersion;
+  static constexpr int kApplicationId = kStoreApplicationId;
 
-  enum class Mode { create_or_open, open_existing, read_only };
+  using Mode = StoreMode;
 
-  // Throws ms::InputError naming `path` if the file is not a ModalStudy database, is damaged
-  // (PRAGMA quick_check; integrity_check when read_only) or has a newer schema; such a file is never
-  // modified. open_existing/read_only also refuse a missing file. create_or_open treats an empty file
-  // (left by a creation that was killed or ran out of disk) as missing.
-  explicit ResultsStore(const std::string& path, Mode mode = Mode::create_or_open);
+  // `location`: a file (SQLite) or a postgresql:// URI. Throws ms::InputError naming the location (a
+  // URI without its password) if it is not a ModalStudy store, is damaged, has a newer schema or cannot
+  // be reached; such a store is never modified. open_existing/read_only also refuse a missing store.
+  // create_or_open treats an empty file (left by a creation that was killed or ran out of disk) as missing.
+  explicit ResultsStore(const std::string& location, Mode mode = Mode::create_or_open);
 
   // In one transaction: adds the study (see add_study) and the participant if new, then resumes the
   // participant's unfinished session or starts one (recording `trials`), and leases it to
@@ -169,8 +171,8 @@ class ResultsStore {
   // The whole schedule of a session, in one transaction.
   void record_trials(std::int64_t session, const std::vector<TrialRecord>& trials);
 
-  // Commits the response in its own transaction and returns only after COMMIT. Throws
-  // sqlite::Error if the trial already has a response (never overwrites) or was not scheduled.
+  // Commits the response in its own transaction and returns only after COMMIT. Throws StoreError
+  // (refused()) if the trial already has a response (never overwrites) or was not scheduled.
   void record_response(std::int64_t session, const ResponseRecord& response);
   void record_event(std::int64_t session, const PlaybackEvent& event);
 
@@ -195,8 +197,8 @@ class ResultsStore {
   std::vector<EventRow> event_rows() const;        // ordered by session, then as logged
   std::vector<TrialRow> trial_rows() const;        // ordered by session, block, trial
   std::int64_t count(const std::string& table) const;  // rows in one of the store's tables
-  std::string integrity_check() const;                  // "ok" when PRAGMA integrity_check passes
-  const std::string& path() const { return db_.path(); }
+  std::string integrity_check() const;                  // "ok" when the database's own check passes
+  const std::string& path() const { return db_->location(); }  // the file, or the URI without password
   int schema_version() const { return schema_version_; }
 
  private:
@@ -205,9 +207,12 @@ class ResultsStore {
   // Runs `write` in one transaction of a session this process holds (refused when read-only or when
   // another process took the session over); committed only if `write` returns.
   void write_in_session(std::int64_t session, std::int64_t now_ms, const std::function<void()>& write);
-  const char* autopilot_column() const;  // "s.autopilot", or "0" in a read-only version-1 file
+  const char* autopilot_column() const;
+  // The rows of one export query (TrialContext first, then `fill` reads the rest), all or an error.
+  template <typename Row, typename Fill>
+  std::vector<Row> context_rows(const char* table, const std::string& sql, Fill fill) const;  // "s.autopilot", or "0" in a read-only version-1 file
 
-  sqlite::Database db_;
+  std::unique_ptr<StoreConnection> db_;
   int schema_version_ = kSchemaVersion;
   LeaseHolder me_ = this_process();
   bool writable_ = false;

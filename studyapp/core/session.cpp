@@ -69,7 +69,9 @@ class Session::Heartbeat {
         if (!store) store = std::make_unique<ResultsStore>(db_path, ResultsStore::Mode::open_existing);
         store->renew_lease(session, this_process(), unix_now_ms());
       } catch (const std::exception&) {
-        // A busy or lost lease is found by the next write of the session itself, which refuses it.
+        // A busy or lost lease is found by the next write of the session itself, which refuses it; a
+        // lost connection (a restarted server) is opened anew at the next beat.
+        store.reset();
       }
     }
   }

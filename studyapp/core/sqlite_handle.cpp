@@ -7,6 +7,8 @@
 
 namespace ms::sqlite {
 
+Error::Error(const std::string& message, int code) : StoreError(message, code == SQLITE_CONSTRAINT), code_(code) {}
+
 Database::Database(const std::string& path, int flags) : path_(path) {
   const int rc = sqlite3_open_v2(path.c_str(), &db_, flags, nullptr);
   if (rc != SQLITE_OK) {
@@ -104,6 +106,9 @@ void Statement::reset() {
   sqlite3_clear_bindings(stmt_);
 }
 
+int Statement::parameter_count() const { return sqlite3_bind_parameter_count(stmt_); }
+int Statement::column_count() const { return sqlite3_column_count(stmt_); }
+int Statement::column_type(int column) const { return sqlite3_column_type(stmt_, column); }
 bool Statement::is_null(int column) const { return sqlite3_column_type(stmt_, column) == SQLITE_NULL; }
 std::int64_t Statement::column_int64(int column) const { return sqlite3_column_int64(stmt_, column); }
 double Statement::column_double(int column) const { return sqlite3_column_double(stmt_, column); }

@@ -6,15 +6,17 @@
 #include <string>
 #include <string_view>
 
+#include "studyapp/core/store_error.hpp"
+
 struct sqlite3;
 struct sqlite3_stmt;
 
 namespace ms::sqlite {
 
 // A failure inside SQLite (I/O, constraint, misuse); what() names the database file.
-class Error : public std::runtime_error {
+class Error : public StoreError {
  public:
-  Error(const std::string& message, int code) : std::runtime_error(message), code_(code) {}
+  Error(const std::string& message, int code);
   int code() const { return code_; }  // primary SQLite result code (e.g. SQLITE_CONSTRAINT)
 
  private:
@@ -60,6 +62,9 @@ class Statement {
   void run();   // step() to completion, then reset()
   void reset();
 
+  int parameter_count() const;
+  int column_count() const;
+  int column_type(int column) const;  // SQLITE_INTEGER, SQLITE_FLOAT, SQLITE_TEXT, SQLITE_BLOB, SQLITE_NULL
   bool is_null(int column) const;
   std::int64_t column_int64(int column) const;
   double column_double(int column) const;

@@ -48,23 +48,6 @@ std::vector<std::vector<std::string>> staircase_rows(const StaircaseAnswer& a, c
   return rows;
 }
 
-// An A/B trial's pair as the protocol writes it ([first, second]) and whether it was played the other
-// way round: the schedule randomises which one is A. A bipolar score (B compared with A) and a
-// chosen letter are turned back to the written order, so answers to one pair can be averaged.
-struct WrittenPair {
-  std::string first, second;
-  bool swapped = false;
-};
-std::optional<WrittenPair> written_pair(const Block* block, const std::string& played_a, const std::string& played_b) {
-  const auto* ab = block ? std::get_if<AbBlock>(&block->body) : nullptr;
-  if (!ab) return std::nullopt;
-  for (const StimulusPair& p : ab->pairs) {
-    if (p[0].name == played_a && p[1].name == played_b) return WrittenPair{p[0].name, p[1].name, false};
-    if (p[0].name == played_b && p[1].name == played_a) return WrittenPair{p[0].name, p[1].name, true};
-  }
-  return std::nullopt;
-}
-
 // The answer in the written order: a bipolar score negated, a chosen letter exchanged, when swapped.
 std::string oriented_cell(const Answer& answer, bool swapped) {
   if (const auto* bipolar = std::get_if<BipolarAnswer>(&answer)) return std::to_string(swapped ? -bipolar->score : bipolar->score);
@@ -123,6 +106,16 @@ const Block* find_block(const Protocol* p, const std::string& id) {
 }  // namespace
 
 const std::vector<std::string>& tidy_key_columns() { return kBase; }
+
+std::optional<WrittenPair> written_pair(const Block* block, const std::string& played_a, const std::string& played_b) {
+  const auto* ab = block ? std::get_if<AbBlock>(&block->body) : nullptr;
+  if (!ab) return std::nullopt;
+  for (const StimulusPair& p : ab->pairs) {
+    if (p[0].name == played_a && p[1].name == played_b) return WrittenPair{p[0].name, p[1].name, false};
+    if (p[0].name == played_b && p[1].name == played_a) return WrittenPair{p[0].name, p[1].name, true};
+  }
+  return std::nullopt;
+}
 
 std::string exported_participant(const std::string& code, std::int64_t id, bool export_personal) {
   // Codes are often names or initials: opaque ids unless the study allows personal fields.

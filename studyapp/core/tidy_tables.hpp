@@ -6,6 +6,7 @@
 // staircase moved after its last answer.
 #pragma once
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,16 @@ const std::vector<std::string>& tidy_key_columns();  // study, participant, sess
 std::map<std::string, std::string> tidy_tables(const std::vector<ResponseRow>& rows,
                                                const std::map<std::string, Protocol>& protocols = {},
                                                std::vector<std::string>* unreadable = nullptr);
+
+// An A/B trial's pair as the protocol writes it ([first, second]) and whether it was played the other
+// way round: the schedule randomises which one is A. A bipolar score (B compared with A) and a
+// chosen letter are turned back to the written order, so answers to one pair can be averaged.
+struct WrittenPair {
+  std::string first, second;
+  bool swapped = false;
+};
+// nullopt when `block` is not an A/B block or has no such pair.
+std::optional<WrittenPair> written_pair(const Block* block, const std::string& played_a, const std::string& played_b);
 
 // The participant as exported: the code if the study allows personal fields, else "p<id>".
 std::string exported_participant(const std::string& code, std::int64_t id, bool export_personal);

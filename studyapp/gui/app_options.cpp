@@ -20,7 +20,8 @@ std::optional<int> parse_command_line(int argc, char** argv, AppOptions& options
   app.set_version_flag("--version", "studyapp 0.1.0");
   app.add_option("protocol", options.protocol_path, "Protocol file (protocols/*.yaml); omit to choose in the window");
   app.add_option("--participant", options.participant, "Participant id (e.g. P07)");
-  app.add_option("--db", options.db_path, "Results database (default <protocol dir>/results/<study>.sqlite)");
+  app.add_option("--db", options.db_path, "Results database: a file (default <protocol dir>/results/<study>.sqlite)"
+                 " or a postgresql://user@host:port/dbname URI");
   app.add_option("--cache", options.cache_dir, "Rendered-stimulus cache folder (default ~/.cache/modalstudy/stimuli)");
   app.add_option("--audio", options.audio, "Audio output: default, null (no sound, events still logged) or a device name")
       ->capture_default_str();

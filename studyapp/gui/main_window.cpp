@@ -12,6 +12,7 @@
 
 #include "studyapp/core/autopilot.hpp"
 #include "studyapp/core/participant_status.hpp"
+#include "studyapp/core/store_location.hpp"
 #include "studyapp/gui/experimenter_window.hpp"
 #include "studyapp/gui/trial_view.hpp"
 #include "synthesis/input_error.hpp"
@@ -188,7 +189,7 @@ void MainWindow::start() {
   if (!controller_ || !controller_->is_prepared()) return;
   const std::filesystem::path db = start_page_->db_path().toStdString();
   std::error_code ignored;  // an unusable folder is reported by the store, naming the file
-  if (db.has_parent_path()) std::filesystem::create_directories(db.parent_path(), ignored);
+  if (db.has_parent_path() && !is_postgres_uri(db.string())) std::filesystem::create_directories(db.parent_path(), ignored);
   try {
     SessionStart how;
     how.new_session = start_page_->new_session() || options_.new_session;

@@ -1,5 +1,6 @@
 // ResultsStore: schema, one-transaction-per-response, resume, refusal of foreign files, and crash
-// safety (a child process killed with SIGKILL mid-session loses no committed response).
+// safety (a child process killed with SIGKILL mid-session loses no committed response). The tests of
+// behaviour run on both back ends (StoreOnBoth); those of the SQLite file itself on SQLite only.
 #include <gtest/gtest.h>
 
 #include <csignal>
@@ -8,6 +9,8 @@
 #include <unistd.h>
 
 #include "studyapp/core/results_store.hpp"
+#include "studyapp/core/sqlite_handle.hpp"
+#include "support/test_stores.hpp"
 #include "support/test_util.hpp"
 #include "synthesis/input_error.hpp"
 
@@ -34,9 +37,14 @@ std::int64_t make_session(ResultsStore& store, int n) {
   return s;
 }
 
-TEST(ResultsStore, RecordsAndReadsBackResponses) {
-  test::TempDir dir;
-  ResultsStore store(dir.file("r.sqlite"));
+class StoreOnBoth : public ::testing::TestWithParam<test::Backend> {};
+INSTANTIATE_TEST_SUITE_P(Backends, StoreOnBoth, ::testing::Values(test::Backend::sqlite, test::Backend::postgresql),
+                         test::backend_name);
+
+TEST_P(StoreOnBoth, RecordsAndReadsBackResponses) {
+  test::TestStore where(GetParam());
+  SKIP_WITHOUT_STORE(where);
+  ResultsStore store(where.location());
   const auto s = make_session(store, 4);
   EXPECT_EQ(store.first_unanswered_trial(s), (TrialPosition{0, 0}));
   store.record_response(s, answer(0, "\"metal\""));
@@ -73,33 +81,43 @@ TEST(ResultsStore, UsesWalFullSyncForeignKeysAndSchemaVersion) {
   EXPECT_EQ(again.integrity_check(), "ok");
 }
 
-TEST(ResultsStore, ReRecordingATrialIsAnErrorAndKeepsTheFirstAnswer) {
-  test::TempDir dir;
-  ResultsStore store(dir.file("r.sqlite"));
+TEST_P(StoreOnBoth, ReRecordingATrialIsAnErrorAndKeepsTheFirstAnswer) {
+  test::TestStore where(GetParam());
+  SKIP_WITHOUT_STORE(where);
+  ResultsStore store(where.location());
   const auto s = make_session(store, 2);
   store.record_response(s, answer(0, "\"glass\""));
-  EXPECT_THROW(store.record_response(s, answer(0, "\"wood\"")), sqlite::Error);
+  try {
+    store.record_response(s, answer(0, "\"wood\""));
+    FAIL() << "a second answer to one trial was stored";
+  } catch (const StoreError& e) {
+    EXPECT_TRUE(e.refused()) << e.what();
+    EXPECT_NE(std::string(e.what()).find("already answered"), std::string::npos) << e.what();
+  }
   EXPECT_EQ(store.response(s, {0, 0})->value_json, "\"glass\"");
   // The prepared statement stays usable after the failure.
   store.record_response(s, answer(1, "\"wood\""));
   EXPECT_EQ(store.count("responses"), 2);
 }
 
-TEST(ResultsStore, RefusesUnscheduledTrialsAndInvalidJson) {
-  test::TempDir dir;
-  ResultsStore store(dir.file("r.sqlite"));
+TEST_P(StoreOnBoth, RefusesUnscheduledTrialsAndInvalidJson) {
+  test::TestStore where(GetParam());
+  SKIP_WITHOUT_STORE(where);
+  ResultsStore store(where.location());
   const auto s = make_session(store, 2);
-  EXPECT_THROW(store.record_response(s, answer(7, "1")), sqlite::Error);      // foreign key
-  EXPECT_THROW(store.record_response(s, answer(0, "metal")), sqlite::Error);  // not JSON
-  EXPECT_THROW(store.record_event(s, {{0, 9}, EventKind::play, "s0", 1}), sqlite::Error);
+  EXPECT_THROW(store.record_response(s, answer(7, "1")), StoreError);      // foreign key
+  EXPECT_THROW(store.record_response(s, answer(0, "metal")), StoreError);  // not JSON
+  EXPECT_THROW(store.record_event(s, {{0, 9}, EventKind::play, "s0", 1}), StoreError);
+  EXPECT_THROW(store.record_event(s, {{0, 0}, EventKind::play, "s0", 1, "{oops"}), StoreError);
   store.record_event(s, {{0, 0}, EventKind::switch_to, "s0", 1});
   EXPECT_EQ(store.count("responses"), 0);
   EXPECT_EQ(store.count("events"), 1);
 }
 
-TEST(ResultsStore, StudyWithSameIdMustHaveSameProtocol) {
-  test::TempDir dir;
-  ResultsStore store(dir.file("r.sqlite"));
+TEST_P(StoreOnBoth, StudyWithSameIdMustHaveSameProtocol) {
+  test::TestStore where(GetParam());
+  SKIP_WITHOUT_STORE(where);
+  ResultsStore store(where.location());
   make_session(store, 1);
   EXPECT_NO_THROW(store.add_study({"demo", "Demo study", std::string(64, 'a'), "study: demo\n", false}));
   EXPECT_THROW(store.add_study({"demo", "Demo", std::string(64, 'b'), "x", false}), InputError);
@@ -169,15 +187,16 @@ TEST(ResultsStore, NewerSchemaVersionIsRefused) {
 
 // The child records responses in a loop and reports each COMMIT through a pipe; the parent kills
 // it with SIGKILL after K reports. Every reported response must survive, and the file stay sound.
-TEST(ResultsStore, CommittedResponsesSurviveSigkill) {
-  test::TempDir dir;
-  const std::string path = dir.file("crash.sqlite");
+TEST_P(StoreOnBoth, CommittedResponsesSurviveSigkill) {
+  test::TestStore where(GetParam());
+  SKIP_WITHOUT_STORE(where);
+  const std::string path = where.location();
   constexpr int kTrials = 2000, kCommitted = 40;
   std::int64_t session = 0;
   {
     ResultsStore store(path);
     session = make_session(store, kTrials);
-  }  // closed before fork: a SQLite connection must not cross fork()
+  }  // closed before fork: a database connection must not cross fork()
   int fds[2];
   ASSERT_EQ(::pipe(fds), 0);
   const pid_t child = ::fork();

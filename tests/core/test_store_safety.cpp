@@ -23,7 +23,9 @@
 #include "studyapp/core/protocol_parser.hpp"
 #include "studyapp/core/results_store.hpp"
 #include "studyapp/core/session.hpp"
+#include "studyapp/core/sqlite_handle.hpp"
 #include "studyapp/core/stimulus_cache.hpp"
+#include "support/test_stores.hpp"
 #include "synthesis/input_error.hpp"
 
 namespace ms {
@@ -133,12 +135,18 @@ TEST(StoreSafety, AFullDiskAtCreationLeavesNoFileAndTheNextRunCreatesIt) {
   EXPECT_EQ(store.integrity_check(), "ok");
 }
 
-TEST(StoreSafety, AFinishedParticipantIsRefusedUnlessANewSessionIsAsked) {
-  test::TempDir dir;
-  const std::string path = testing::write_small_study(dir);
+// The rules of sessions and leases, on both back ends.
+class StoreSafetyOnBoth : public ::testing::TestWithParam<test::Backend> {};
+INSTANTIATE_TEST_SUITE_P(Backends, StoreSafetyOnBoth,
+                         ::testing::Values(test::Backend::sqlite, test::Backend::postgresql), test::backend_name);
+
+TEST_P(StoreSafetyOnBoth, AFinishedParticipantIsRefusedUnlessANewSessionIsAsked) {
+  test::TestStore where(GetParam());
+  SKIP_WITHOUT_STORE(where);
+  const std::string path = testing::write_small_study(where.dir());
   const Protocol p = load_protocol(path);
   StimulusCache cache(p, "");
-  const std::string db = dir.file("r.sqlite");
+  const std::string db = where.location();
   {
     Session s(p, slurp(path), "P07", db, cache.hashes(), 1'764'547'200'000);  // 2025-12-01
     while (!s.finished()) s.answer(good_answer(s), 1.0, 1, 1'764'547'200'000);
@@ -206,10 +214,11 @@ pid_t hold_session_in_child(const std::string& study_path, const std::string& db
   ::_exit(0);
 }
 
-TEST(StoreSafety, TheSameParticipantInTwoProcessesIsRefusedAndACrashDoesNotBlockTheResume) {
-  test::TempDir dir;
-  const std::string path = testing::write_small_study(dir);
-  const std::string db = dir.file("r.sqlite");
+TEST_P(StoreSafetyOnBoth, TheSameParticipantInTwoProcessesIsRefusedAndACrashDoesNotBlockTheResume) {
+  test::TestStore where(GetParam());
+  SKIP_WITHOUT_STORE(where);
+  const std::string path = testing::write_small_study(where.dir());
+  const std::string db = where.location();
   int ready[2], go[2];
   ASSERT_EQ(::pipe(ready), 0);
   ASSERT_EQ(::pipe(go), 0);
@@ -241,9 +250,10 @@ TEST(StoreSafety, TheSameParticipantInTwoProcessesIsRefusedAndACrashDoesNotBlock
   EXPECT_EQ(resumed.store().count("sessions"), 2);
 }
 
-TEST(StoreSafety, AProcessWhoseLeaseWasTakenOverStoresNothingMore) {
-  test::TempDir dir;
-  const std::string db = dir.file("r.sqlite");
+TEST_P(StoreSafetyOnBoth, AProcessWhoseLeaseWasTakenOverStoresNothingMore) {
+  test::TestStore where(GetParam());
+  SKIP_WITHOUT_STORE(where);
+  const std::string db = where.location();
   ResultsStore store(db);
   store.add_study({"demo", "Demo", std::string(64, 'a'), "study: demo\n", false});
   SessionRequest r{"demo", "P01", 1000, 7u, {{0, "id", "identify", 0, {"s"}, {"h"}}, {0, "id", "identify", 1, {"s"}, {"h"}}}};
@@ -352,12 +362,13 @@ TEST(StoreSafety, AFolderSQLiteCannotWriteInIsNamedAsSuch) {
   EXPECT_EQ(WEXITSTATUS(status), 0);
 }
 
-TEST(StoreSafety, SimulatedSessionsAreMarked) {
-  test::TempDir dir;
-  const std::string path = testing::write_small_study(dir);
+TEST_P(StoreSafetyOnBoth, SimulatedSessionsAreMarked) {
+  test::TestStore where(GetParam());
+  SKIP_WITHOUT_STORE(where);
+  const std::string path = testing::write_small_study(where.dir());
   AutopilotOptions o;
   o.protocol_path = path;
-  o.db_path = dir.file("r.sqlite");
+  o.db_path = where.location();
   o.participant = "A1";
   run_autopilot(o);
   {
