@@ -1,8 +1,7 @@
 #include "synthesis/csv.hpp"
 
-#include <charconv>
-
 #include "synthesis/bounded_file.hpp"
+#include "synthesis/exact_number.hpp"
 
 namespace ms::csv {
 
@@ -178,10 +177,6 @@ std::string line(const std::vector<std::string>& cells) {
   return out + "\r\n";
 }
 
-std::string number(double v) {
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
-}
+std::string number(double v) { return exact_number(v); }
 
 }  // namespace ms::csv

@@ -2,22 +2,13 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include <array>
-#include <charconv>
-
 #include "synthesis/bounded_file.hpp"
+#include "synthesis/exact_number.hpp"
 #include "synthesis/yaml_reader.hpp"
 
 namespace ms {
 
 namespace {
-
-// The shortest text that reads back as exactly `v` (std::to_chars without a precision).
-std::string exact_number(double v) {
-  std::array<char, 64> buf{};
-  const auto [end, ec] = std::to_chars(buf.data(), buf.data() + buf.size(), v);
-  return std::string(buf.data(), ec == std::errc() ? end : buf.data());
-}
 
 double required(const YamlReader& r, const YAML::Node& map, const std::string& path, const char* key,
                 bool strictly_positive) {

@@ -240,6 +240,17 @@ void apply_recipe_prune(const ParamSetRecipe& r, ParamSet& p) {
   }
 }
 
+// renderer: bandpass: the filters' Q, one for all or one per mode of the resolved model, and the clipper.
+void apply_recipe_bandpass(const ParamSetRecipe& r, ParamSet& p) {
+  p.renderer = Renderer::bandpass;
+  p.bandpass_q = bandpass_q(*r.bandpass);
+  p.bandpass_clip = r.bandpass->clip;
+  const std::size_t n = p.bandpass_q.size(), modes = p.model.modes.size();
+  if (n != 1 && n != modes)
+    r.origin.fail("bandpass.q", std::to_string(n) + " Q values for " + std::to_string(modes) +
+                                    " modes (after doublets and pruning): give one Q, or one per mode");
+}
+
 }  // namespace
 
 ParamSet resolve(const ParamSetRecipe& r, const Confinement* confinement) {
@@ -258,10 +269,13 @@ ParamSet resolve(const ParamSetRecipe& r, const Confinement* confinement) {
   p.format_where = format_at != r.origin.written_at.end() ? format_at->second : SourceLocation{r.origin.file, 0, 0};
   std::vector<int> orders;
   p.model = r.object ? object_modes(r, confinement, orders, p.warnings) : listed_modes(r, confinement);
+  if (r.phase == OnsetPhase::cosine)
+    for (Mode& m : p.model.modes) m.phase_rad += 0.5 * std::numbers::pi;  // sin(x + pi/2) = cos x
   if (r.support_damping) apply_support_damping(p.model, *r.support_damping);
   if (r.doublets) apply_recipe_doublets(r, p.model, orders);
   if (r.prune && !p.model.modes.empty()) apply_recipe_prune(r, p);
   if (p.model.modes.empty()) r.origin.fail("", "the model has no modes");
+  if (r.renderer == Renderer::bandpass) apply_recipe_bandpass(r, p);
   if (r.residual) p.residual = read_residual(r, confinement);
   p.recipe_hash = sha256_hex(canonical_recipe(p));
   return p;
@@ -299,6 +313,11 @@ std::string canonical_recipe(const ParamSet& p) {
         (unsigned long long)p.transient.seed);
   if (p.residual.spectrogram)
     add("residual %s %.17g %llu\n", p.residual.sha256.c_str(), p.residual.gain_db, (unsigned long long)p.residual.seed);
+  if (p.renderer == Renderer::bandpass) {
+    add("bandpass %.17g", p.bandpass_clip);
+    for (double q : p.bandpass_q) add(" %.17g", q);
+    add("\n");
+  }
   add("modes %zu\n", p.model.modes.size());
   for (const Mode& m : p.model.modes)
     add("%.17g %.17g %.17g %.17g\n", m.freq_hz, m.decay_per_s, m.amp, m.phase_rad);

@@ -39,6 +39,9 @@ struct ParamSet {
   AttackTransient transient;     // likewise
   BackgroundNoise noise;         // added after rendering, before the output level
   ResidualUse residual;          // transferred to the model and added to it, before reverb and transient
+  Renderer renderer = Renderer::resonator;
+  std::vector<double> bandpass_q;  // renderer bandpass: one Q for all, or one per mode of `model`
+  double bandpass_clip = 1.0;      // renderer bandpass: the clipper's level (0: none)
   SampleFormat format = SampleFormat::float32;
   SourceLocation format_where;   // where output.format was written (the file alone when it was not)
   std::string description;       // free text

@@ -58,6 +58,7 @@ struct RecipeReader {
   void effects(const YAML::Node& fx) const;
   void doublets(const YAML::Node& node) const;
   void prune(const YAML::Node& node) const;
+  void renderer(const YAML::Node& root) const;
   void level(const YAML::Node& node) const;
 };
 
@@ -327,6 +328,38 @@ void RecipeReader::level(const YAML::Node& l) const {
   }
 }
 
+// `renderer:`, its `bandpass:` section and `phase:`.
+void RecipeReader::renderer(const YAML::Node& root) const {
+  if (root["phase"]) out.phase = choice(root["phase"], "phase", kOnsetPhaseNames, "phase");
+  if (root["renderer"]) out.renderer = choice(root["renderer"], "renderer", kRendererNames, "renderer");
+  const YAML::Node b = root["bandpass"];
+  if (out.renderer != Renderer::bandpass) {
+    if (b) r.fail(b, "bandpass", "band-pass filters are used with 'renderer: bandpass' only");
+    return;
+  }
+  if (!b) r.fail(root["renderer"], "renderer", "'renderer: bandpass' needs 'bandpass: {q: ...}' or 'bandpass: {material: ...}'");
+  r.check_keys(b, "bandpass", {"q", "material", "q_table", "clip"});
+  note(b, "bandpass");
+  BandpassRecipe& bp = out.bandpass.emplace();
+  if (b["q"] && b["material"]) r.fail(b, "bandpass", "give either 'q' or 'material', not both");
+  if (const YAML::Node q = b["q"]) {
+    note(q, "bandpass.q");
+    bp.q = q.IsSequence() ? r.numbers(q, "bandpass.q") : std::vector<double>{r.number(q, "bandpass.q")};
+    for (std::size_t i = 0; i < bp.q.size(); ++i)
+      if (!(bp.q[i] > 0.0 && bp.q[i] <= 1e6)) r.fail(q.IsSequence() ? q[i] : q, "bandpass.q", "must lie in (0, 1e6]");
+    if (bp.q.empty()) r.fail(q, "bandpass.q", "needs one Q, or one per mode");
+    if (b["q_table"]) r.fail(b["q_table"], "bandpass.q_table", "picks a material's Q: give 'material' instead of 'q'");
+  } else if (b["material"]) {
+    bp.material = choice(b["material"], "bandpass.material", kBandpassMaterialNames, "band-pass material");
+    if (b["q_table"]) bp.q_table = choice(b["q_table"], "bandpass.q_table", kQTableNames, "Q table");
+  } else {
+    r.fail(b, "bandpass", "needs 'q' (one, or one per mode) or 'material' (plastic, wood, ceramic, glass, metal)");
+  }
+  if (b["clip"]) bp.clip = r.non_negative(b["clip"], "bandpass.clip");
+  if (out.excitation.shape != PulseShape::impulse)
+    r.fail(root["excitation"], "excitation", "the band-pass renderer is excited by an impulse (type: impulse)");
+}
+
 }  // namespace
 
 double default_target_dbfs(LevelMode mode) { return mode == LevelMode::attack_rms ? -20.0 : -1.0; }
@@ -341,7 +374,8 @@ ParamSetRecipe read_recipe(const std::string& yaml_text, const std::string& file
   r.check_keys(root, "", {"description", "sample_rate", "duration_s", "modes", "object", "material",
                           "damping_law", "damping", "specific_modulus_m2_s2", "stiffness_scale",
                           "size_scale", "amp_scale", "fundamental_hz", "hit", "hit_gains",
-                          "excitation", "effects", "prune", "level", "output", "residual"});
+                          "excitation", "effects", "prune", "level", "output", "residual", "renderer",
+                          "bandpass", "phase"});
   ParamSetRecipe recipe;
   recipe.origin.file = file;
   recipe.origin.base_dir = base_dir;
@@ -370,6 +404,7 @@ ParamSetRecipe read_recipe(const std::string& yaml_text, const std::string& file
     recipe.residual = ResidualRecipe{r.text(n["file"], "residual.file"), 0.0, read.seed(n, "residual")};
     if (n["gain_db"]) recipe.residual->gain_db = read.within(n["gain_db"], "residual.gain_db", -120, 40, "[-120, 40] dB");
   }
+  read.renderer(root);
   if (root["level"]) read.level(root["level"]);
   if (const YAML::Node o = root["output"]) {
     r.check_keys(o, "output", {"format"});

@@ -20,6 +20,7 @@
 #include "synthesis/modal_model.hpp"
 #include "synthesis/name_table.hpp"
 #include "synthesis/output_level.hpp"
+#include "synthesis/renderer_choice.hpp"
 
 namespace ms {
 
@@ -110,6 +111,9 @@ struct ParamSetRecipe {
   AttackTransient transient;
   std::optional<PruneRecipe> prune;
   std::optional<ResidualRecipe> residual;
+  Renderer renderer = Renderer::resonator;
+  std::optional<BandpassRecipe> bandpass;  // exactly with renderer: bandpass
+  OnsetPhase phase = OnsetPhase::sine;
   OutputLevel level{LevelMode::peak, -1.0, 0.005};
   SampleFormat format = SampleFormat::float32;
   RecipeOrigin origin;

@@ -4,7 +4,7 @@
 #include <initializer_list>
 #include <utility>
 
-#include "synthesis/csv.hpp"
+#include "synthesis/exact_number.hpp"
 #include "synthesis/paramset_recipe.hpp"
 
 namespace ms {
@@ -18,7 +18,7 @@ struct RecipeWriter {
   void key(const char* k) { out << YAML::Key << k << YAML::Value; }
   void number(const char* k, double v) {
     key(k);
-    out << csv::number(v);
+    out << exact_number(v);
   }
   void integer(const char* k, long long v) {
     key(k);
@@ -35,7 +35,7 @@ struct RecipeWriter {
   void numbers(const char* k, const std::vector<double>& v) {
     key(k);
     out << YAML::Flow << YAML::BeginSeq;
-    for (double x : v) out << csv::number(x);
+    for (double x : v) out << exact_number(x);
     out << YAML::EndSeq;
   }
   void begin_flow(const char* k) {
@@ -58,6 +58,7 @@ struct RecipeWriter {
   void excitation(const Excitation& e);
   void effects(const ParamSetRecipe& r);
   void prune(const PruneRecipe& p);
+  void renderer(const ParamSetRecipe& r);
   void level(const OutputLevel& l);
 };
 
@@ -182,6 +183,24 @@ void RecipeWriter::prune(const PruneRecipe& p) {
   end();
 }
 
+void RecipeWriter::renderer(const ParamSetRecipe& r) {
+  if (r.phase != OnsetPhase::sine) name("phase", kOnsetPhaseNames, r.phase);
+  if (r.renderer == Renderer::resonator) return;
+  name("renderer", kRendererNames, r.renderer);
+  const BandpassRecipe& b = *r.bandpass;
+  begin_flow("bandpass");
+  if (b.material) {
+    name("material", kBandpassMaterialNames, *b.material);
+    if (b.q_table != QTable::table_4_1) name("q_table", kQTableNames, b.q_table);
+  } else if (b.q.size() == 1) {
+    number("q", b.q[0]);
+  } else {
+    numbers("q", b.q);
+  }
+  if (b.clip != 1.0) number("clip", b.clip);
+  end();
+}
+
 void RecipeWriter::level(const OutputLevel& l) {
   begin_flow("level");
   name("normalize", kLevelModeNames, l.mode);
@@ -218,6 +237,7 @@ std::string write_yaml(const ParamSetRecipe& r) {
     if (r.residual->seed != 0) w.seed(r.residual->seed);
     w.end();
   }
+  w.renderer(r);
   w.level(r.level);
   w.begin_flow("output");
   w.name("format", kSampleFormatNames, r.format);

@@ -5,13 +5,13 @@
 
 #include <array>
 #include <bit>
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <stdexcept>
 
 #include "synthesis/atomic_file.hpp"
+#include "synthesis/exact_number.hpp"
 #include "synthesis/yaml_reader.hpp"
 
 namespace ms {
@@ -22,12 +22,6 @@ constexpr const char* kFormat = "modalstudy-residual 1";
 constexpr const char* kPayload = "float32-le";
 constexpr const char* kHeaderEnd = "\n...\n";
 constexpr std::size_t kMaxFftSize = 65536;
-
-std::string exact_number(double v) {
-  std::array<char, 64> buf{};
-  const auto [end, ec] = std::to_chars(buf.data(), buf.data() + buf.size(), v);
-  return std::string(buf.data(), ec == std::errc() ? end : buf.data());
-}
 
 std::uint32_t little_endian(std::uint32_t v) {
   if constexpr (std::endian::native == std::endian::big)

@@ -6,6 +6,7 @@
 
 #include "synthesis/input_error.hpp"
 
+#include "synthesis/bandpass_bank.hpp"
 #include "synthesis/residual_transfer.hpp"
 #include "synthesis/resonator_bank.hpp"
 
@@ -28,7 +29,11 @@ RenderedStimulus render_stimulus(const ParamSet& p) {
   const std::size_t frames = std::size_t(std::llround(p.duration_s * p.sample_rate_hz));
   out.audio.sample_rate_hz = p.sample_rate_hz;
   out.audio.channels = 1;
-  out.audio.samples = render_bank(model, p.excitation, p.sample_rate_hz, frames);
+  // The band-pass bank leaves out the modes that cannot sound itself, keeping each mode's Q beside it.
+  out.audio.samples = p.renderer == Renderer::bandpass
+                          ? render_bandpass(p.model, p.bandpass_q, p.excitation.gain, p.bandpass_clip,
+                                            p.sample_rate_hz, frames)
+                          : render_bank(model, p.excitation, p.sample_rate_hz, frames);
   if (const auto& r = p.residual.spectrogram)
     add_transferred_residual(out.audio.samples, *r, heard_modes(model.modes, p.excitation), p.sample_rate_hz,
                              p.residual.gain_db, p.residual.seed);
