@@ -1,7 +1,8 @@
 // modalstudy serve PROTOCOL.yaml [--db FILE] [--host 127.0.0.1] [--port 8080]
 //                  [--participants N | --participant-list FILE] [--base-url URL]
-// The study in participants' browsers: prints one link per participant (to stdout, for the
-// experimenter), then serves until Ctrl-C. The request log (stderr) names no link or token.
+// The study in participants' browsers: prints the experimenter's page (a new token at every start) and
+// one link per participant (to stdout, for the experimenter), then serves until Ctrl-C. The request
+// log (stderr) names no link or token.
 #include <iostream>
 #include <mutex>
 
@@ -56,6 +57,7 @@ void register_serve(CLI::App& app) {
     std::cout << "serving " << opt->serve.protocol_path << " into " << server.db_path() << " at http://"
               << opt->serve.http.host << ":" << server.port() << "\n";
     if (!server.links_path().empty()) std::cout << "links kept in " << server.links_path() << "\n";
+    std::cout << "experimenter " << server.experimenter_url(base) << "\n";
     for (const auto& link : server.links()) std::cout << link.participant << " " << server.link_url(link, base) << "\n";
     std::cout << "Ctrl-C stops the server" << std::endl;
     server.run();

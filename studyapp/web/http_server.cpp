@@ -31,6 +31,7 @@ http::response<http::string_body> to_http(const WebResponse& r, unsigned version
   res.set("X-Frame-Options", "DENY");
   res.set("Referrer-Policy", "no-referrer");  // the link's token never leaves in a Referer header
   res.set("Content-Security-Policy", "default-src 'self'; frame-ancestors 'none'");
+  if (!r.download_name.empty()) res.set(http::field::content_disposition, "attachment; filename=\"" + r.download_name + "\"");
   res.keep_alive(keep_alive);
   res.body() = r.body;
   res.prepare_payload();

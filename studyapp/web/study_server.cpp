@@ -10,6 +10,7 @@
 #include "studyapp/core/protocol_validator.hpp"
 #include "studyapp/core/stimulus_cache.hpp"
 #include "studyapp/web/client_files.hpp"
+#include "studyapp/web/experimenter_view.hpp"
 #include "studyapp/web/rate_limit.hpp"
 #include "studyapp/web/study_service.hpp"
 #include "studyapp/web/web_routes.hpp"
@@ -45,6 +46,7 @@ struct StudyServer::Impl {
   std::string db_path, links_path;
   std::unique_ptr<StimulusCache> cache;
   std::unique_ptr<StudyService> service;
+  std::unique_ptr<ExperimenterView> experimenter;
   std::unique_ptr<ClientFiles> client;
   std::unique_ptr<RateLimit> limit;
   std::unique_ptr<HttpServer> http;
@@ -84,10 +86,11 @@ StudyServer::StudyServer(const ServeOptions& o, Logger log) : impl_(std::make_un
   setup.db_path = m.db_path;
   setup.links = m.links;
   m.service = std::make_unique<StudyService>(std::move(setup));
+  m.experimenter = std::make_unique<ExperimenterView>(protocol, m.db_path, m.links);
   if (o.rate_per_second > 0) m.limit = std::make_unique<RateLimit>(o.rate_burst, o.rate_per_second);
   Handler handler = [&m, log](const WebRequest& request) {
     const auto start = std::chrono::steady_clock::now();
-    WebResponse response = route(*m.service, *m.client, request, m.limit.get());
+    WebResponse response = route(*m.service, *m.client, request, m.limit.get(), m.experimenter.get());
     if (log) {
       const auto ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
       char took[32];
@@ -107,10 +110,23 @@ const std::vector<ParticipantLink>& StudyServer::links() const { return impl_->l
 const std::string& StudyServer::db_path() const { return impl_->db_path; }
 const std::string& StudyServer::links_path() const { return impl_->links_path; }
 
-std::string StudyServer::link_url(const ParticipantLink& link, const std::string& base_url) const {
-  std::string base = base_url;
+namespace {
+
+std::string without_trailing_slashes(std::string base) {
   while (!base.empty() && base.back() == '/') base.pop_back();
-  return base + "/s/" + link.token;
+  return base;
+}
+
+}  // namespace
+
+std::string StudyServer::link_url(const ParticipantLink& link, const std::string& base_url) const {
+  return without_trailing_slashes(base_url) + "/s/" + link.token;
+}
+
+const std::string& StudyServer::experimenter_token() const { return impl_->experimenter->token(); }
+
+std::string StudyServer::experimenter_url(const std::string& base_url) const {
+  return without_trailing_slashes(base_url) + "/x/" + experimenter_token();
 }
 
 void StudyServer::run() { impl_->http->run(); }

@@ -36,6 +36,8 @@ class StudyServer {
   const std::string& db_path() const;
   const std::string& links_path() const;  // "" when the links came from --participant-list
   std::string link_url(const ParticipantLink& link, const std::string& base_url) const;  // base/s/<token>
+  const std::string& experimenter_token() const;  // drawn afresh at every start
+  std::string experimenter_url(const std::string& base_url) const;                        // base/x/<token>
   void run();   // until stop() or a signal (options.http.stop_on_signals)
   void stop();
 

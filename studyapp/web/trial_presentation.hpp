@@ -2,6 +2,16 @@
 // its sounds under opaque ids drawn afresh for every trial (and every staircase step), so neither the
 // page, the network nor the JS names a stimulus, its recipe hash, or which MUSHRA sound is the hidden
 // reference or an anchor. The server keeps the other half: which id is which stimulus, what was heard.
+//
+// What this cannot hide, by choice: a MUSHRA hidden reference IS the open reference, so it is served
+// as the same bytes (the cache's one file for that recipe). A script in the page could compare decoded
+// buffers and find it. Disguising it (a per-serve dither, a gain, another encoding) would change what
+// the listener hears and break the method's premise that the hidden reference is identical to the
+// reference, so the audio stays identical and the leak is accepted: it needs deliberate scripting, not
+// listening, and an honest participant's page never reads the samples. What is guaranteed (tests in
+// tests/web/test_hidden_reference.cpp): the hidden reference's bytes equal the open reference's and no
+// other condition's; every sound has its own id, drawn afresh at every sending (an old id is refused);
+// the served files carry no name, recipe hash or metadata chunk; the page and JSON name no stimulus.
 #pragma once
 #include <cstdint>
 #include <optional>

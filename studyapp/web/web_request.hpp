@@ -20,6 +20,7 @@ struct WebResponse {
   std::string body;
   bool cacheable = false;  // client files may be cached; answers, pages and sounds never
   std::string log_note;    // for the server's log only (why a 500 happened), never sent
+  std::string download_name;  // "" = shown in the page; else saved as this file (Content-Disposition)
 };
 
 // A refused request: its HTTP status and the reason the response's {"error": ...} gives.

@@ -34,7 +34,32 @@ void require(const WebRequest& r, const char* method) {
   if (r.method != method) throw Refusal(405, std::string("use ") + method + " here");
 }
 
-WebResponse dispatch(StudyService& service, const ClientFiles& client, const WebRequest& r) {
+bool is_experimenter(const ExperimenterView* experimenter, const std::vector<std::string>& s) {
+  return experimenter && s.size() >= 2 && (s[0] == "x" || s[0] == "xapi") && experimenter->admits(s[1]);
+}
+
+// The experimenter's pages; a token that is not the experimenter's learns nothing but 404.
+WebResponse dispatch_experimenter(const ExperimenterView* experimenter, const ClientFiles& client,
+                                  const std::vector<std::string>& s, const WebRequest& r) {
+  if (!is_experimenter(experimenter, s)) {
+    if (s[0] == "x") return text_page(404, "This link is not part of the study. Please check it.");
+    throw Refusal(404, "no such page");
+  }
+  require(r, "GET");
+  if (s[0] == "x" && s.size() == 2) {
+    auto page = client.get("/client/experimenter.html");
+    if (!page) throw Refusal(404, "no such file");
+    page->cacheable = false;
+    return *page;
+  }
+  if (s.size() == 3 && s[2] == "completion") return experimenter->completion();
+  if (s.size() == 3 && s[2] == "export") return experimenter->export_list();
+  if (s.size() == 4 && s[2] == "export") return experimenter->export_file(s[3]);
+  throw Refusal(404, "no such page");
+}
+
+WebResponse dispatch(StudyService& service, const ClientFiles& client, const ExperimenterView* experimenter,
+                     const WebRequest& r) {
   const std::vector<std::string> s = segments(r.target);
   if (r.target.empty() || r.target.front() != '/') throw Refusal(400, "the request target must be a path");
   if (s.size() == 1 && s[0].empty()) {
@@ -51,6 +76,7 @@ WebResponse dispatch(StudyService& service, const ClientFiles& client, const Web
     if (!service.knows(s[1])) return text_page(404, "This link is not part of the study. Please check it.");
     return client.index();
   }
+  if ((s[0] == "x" || s[0] == "xapi") && s.size() >= 2) return dispatch_experimenter(experimenter, client, s, r);
   if (s[0] == "api" && s.size() >= 3) {
     const std::string& token = s[1];
     const std::string& what = s[2];
@@ -65,16 +91,18 @@ WebResponse dispatch(StudyService& service, const ClientFiles& client, const Web
 
 }  // namespace
 
-WebResponse route(StudyService& service, const ClientFiles& client, const WebRequest& request, RateLimit* limit) {
+WebResponse route(StudyService& service, const ClientFiles& client, const WebRequest& request, RateLimit* limit,
+                  const ExperimenterView* experimenter) {
   try {
     if (limit) {
       const std::vector<std::string> s = segments(request.target);
       const bool client_file = !s.empty() && s[0] == "client";
       const bool names_link = s.size() >= 2 && (s[0] == "api" || s[0] == "s") && service.knows(s[1]);
-      if (!client_file && !limit->allow(names_link ? s[1] : std::string()))
+      const std::string key = names_link ? s[1] : is_experimenter(experimenter, s) ? "experimenter" : std::string();
+      if (!client_file && !limit->allow(key))
         throw Refusal(429, "too many requests; please wait a moment");
     }
-    return dispatch(service, client, request);
+    return dispatch(service, client, experimenter, request);
   } catch (const Refusal& e) {
     return error_response(e.status(), e.what());
   } catch (const std::exception& e) {
@@ -88,9 +116,9 @@ WebResponse route(StudyService& service, const ClientFiles& client, const WebReq
 std::string loggable_target(const WebRequest& request) {
   const std::vector<std::string> s = segments(request.target);
   std::string route = "/";
-  if (!s.empty() && (s[0] == "api" || s[0] == "s")) {
+  if (!s.empty() && (s[0] == "api" || s[0] == "s" || s[0] == "x" || s[0] == "xapi")) {
     route += s[0] + (s.size() > 1 ? "/*" : "");
-    if (s[0] == "api" && s.size() > 2) route += "/" + (s[2].size() <= 8 ? s[2] : std::string("?"));
+    if ((s[0] == "api" || s[0] == "xapi") && s.size() > 2) route += "/" + (s[2].size() <= 8 ? s[2] : std::string("?"));
     if (s.size() > 3) route += "/*";
   } else if (!s.empty() && s[0] == "client") {
     route = "/client/*";

@@ -11,6 +11,7 @@
 #include "studyapp/core/results_store.hpp"
 #include "studyapp/web/study_server.hpp"
 #include "support/test_util.hpp"
+#include "web/answer_body.hpp"
 #include "web/http_client.hpp"
 
 namespace ms::test {
@@ -76,22 +77,7 @@ class ServeTest : public ::testing::Test {
   }
 
   // A valid answer to the page, as the client would send it.
-  static nlohmann::json answer_body(const nlohmann::json& page) {
-    nlohmann::json body{{"trial", page["trial"]}, {"step", page["step"]}, {"rt_ms", 900}};
-    const std::string type = page["type"];
-    if (type == "instructions") body["answer"] = "ok";
-    if (type == "ab") body["answer"] = "A";
-    if (type == "identify") body["answer"] = "two";
-    if (type == "mushra") {
-      body["answer"] = nlohmann::json::object();
-      body["moved"] = nlohmann::json::array();
-      for (std::size_t k = 1; k < page["sounds"].size(); ++k) {
-        body["answer"][page["sounds"][k]["id"].get<std::string>()] = 40 + 10 * static_cast<int>(k);
-        body["moved"].push_back(page["sounds"][k]["id"]);
-      }
-    }
-    return body;
-  }
+  static nlohmann::json answer_body(const nlohmann::json& page) { return test::answer_body(page); }
 
   // Hears and answers the current trial; returns the reply.
   HttpReply answer_current(std::size_t i = 0) const {
