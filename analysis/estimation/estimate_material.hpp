@@ -19,17 +19,37 @@ struct EstimateOptions {
   std::size_t max_starts = 6;            // local searches run, from the start points of lowest metric
   std::size_t max_evaluations = 250;     // per local search
   double max_duration_s = 2.0;           // the recording's image is compared over at most this long
+  // The strike's contact duration is searched as a fifth parameter (its shape is the excitation's):
+  // a longer contact low-passes the upper modes, which a fixed duration would read as a smaller sigma
+  // or a faster decay. Ignored for an impulse.
+  bool fit_contact = true;
+  double min_contact_s = 2e-5, max_contact_s = 5e-3;
+  // Each candidate is rendered with only the modes the masking rule (synthesis/masking_pruning.hpp)
+  // hears: a plate has hundreds of modes, most of them masked or under the threshold in quiet, and
+  // the render's cost is proportional to the modes. The margins keep every mode near audibility:
+  // 10 dB above the metric's playback level and a_v = 30 dB (the 2002 study's listeners tolerated
+  // 3-20 dB).
+  bool prune_inaudible = true;
+  // The recording's white-noise standard deviation (ExtractedFeatures::noise_sigma). Each candidate is
+  // compared with this much noise added (one seeded draw for all), as the recording has it: after a
+  // fast decay the recording's image is noise for most of its length, and a noise-free candidate
+  // would then be rewarded for filling it with extra, slower or lower modes.
+  double noise_sigma = 0.0;
+  double prune_threshold_db = 30.0;  // a_v of the masking rule
+  double prune_headroom_db = 10.0;   // the rule's playback level above perceptual.playback_db_spl
 };
 
 struct StartResult {
   StartPoint start;
   Candidate initial, fitted;
+  double contact_s = 0.0;  // the fitted contact duration (the excitation's when not fitted)
   PerceptualScores scores;  // of the fitted candidate
   std::size_t iterations = 0, evaluations = 0;
 };
 
 struct MaterialEstimate {
   Candidate material;
+  double contact_s = 0.0;  // the strike's contact duration the estimate was rendered with (fitted or given)
   PerceptualScores scores;
   std::vector<StartResult> starts;  // every local search, in the order run
   std::size_t iterations = 0;       // summed over the starts

@@ -16,6 +16,16 @@ double eigenvalue_of(const Mode& m) {
 }
 }  // namespace
 
+RayleighCircle nearest_physical_circle(const Mode& a, const Mode& b) {
+  if (const auto exact = rayleigh_circle_through(a, b)) return *exact;
+  const double la = eigenvalue_of(a), lb = eigenvalue_of(b), ca = 2.0 * a.decay_per_s, cb = 2.0 * b.decay_per_s;
+  // Least squares of c = alpha + beta lambda through both points with the offending coefficient 0.
+  const double beta_only = (ca * la + cb * lb) / (la * la + lb * lb), alpha_only = 0.5 * (ca + cb);
+  const double beta_raw = std::abs(la - lb) > 0 ? (ca - cb) / (la - lb) : 0.0;
+  if (beta_raw < 0.0) return {alpha_only, 0.0};
+  return {0.0, beta_only};
+}
+
 std::optional<RayleighCircle> rayleigh_circle_through(const Mode& a, const Mode& b) {
   const double la = eigenvalue_of(a), lb = eigenvalue_of(b);
   if (!(std::abs(la - lb) > 1e-12 * std::max(la, lb))) return std::nullopt;
@@ -91,24 +101,30 @@ std::vector<StartPoint> start_points(const std::vector<Mode>& modes, const std::
       if (excitation[e] != 0.0 && (front.empty() || lambda0[front.back()] != lambda0[e])) front.push_back(e);
     }
   }
-  for (std::size_t p = 0; p < rank.size(); ++p)
-    for (std::size_t q = p + 1; q < rank.size(); ++q) {
-      const auto circle = rayleigh_circle_through(modes[rank[p]], modes[rank[q]]);
-      if (!circle) continue;
-      const auto lambda = eigenvalue_for_frequency(*circle, top.freq_hz);
-      if (!lambda) continue;
-      for (std::size_t e : front) {
-        if (!(lambda0[e] > 0.0)) continue;
-        StartPoint s;
-        s.circle = *circle;
-        s.stiffness_ratio = *lambda / lambda0[e];
-        s.amp_scale = top.amp / std::abs(excitation[e]);
-        s.mode_a = rank[p];
-        s.mode_b = rank[q];
-        s.eigenvalue = e;
-        starts.push_back(s);
+  // The exact circles first; the nearest physical ones only when no exact circle gives a start.
+  for (const bool nearest : {false, true}) {
+    if (nearest && !starts.empty()) break;
+    for (std::size_t p = 0; p < rank.size(); ++p)
+      for (std::size_t q = p + 1; q < rank.size(); ++q) {
+        const std::optional<RayleighCircle> circle =
+            nearest ? std::optional(nearest_physical_circle(modes[rank[p]], modes[rank[q]]))
+                    : rayleigh_circle_through(modes[rank[p]], modes[rank[q]]);
+        if (!circle) continue;
+        const auto lambda = eigenvalue_for_frequency(*circle, top.freq_hz);
+        if (!lambda) continue;
+        for (std::size_t e : front) {
+          if (!(lambda0[e] > 0.0)) continue;
+          StartPoint s;
+          s.circle = *circle;
+          s.stiffness_ratio = *lambda / lambda0[e];
+          s.amp_scale = top.amp / std::abs(excitation[e]);
+          s.mode_a = rank[p];
+          s.mode_b = rank[q];
+          s.eigenvalue = e;
+          starts.push_back(s);
+        }
       }
-    }
+  }
   return starts;
 }
 

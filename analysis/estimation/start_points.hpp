@@ -1,5 +1,6 @@
 // Starting points of the material estimation (patent US 9,401,684 Sec. 5.3): every pair of dominant
-// reference modes fixes a Rayleigh circle (alpha, beta) through both, Eq. 8; every eigenvalue of the
+// reference modes fixes a Rayleigh circle (alpha, beta) through both, Eq. 8 (when no pair has a physical
+// circle, the nearest physical ones); every eigenvalue of the
 // virtual object's Pareto set (no other has a smaller eigenvalue and a larger excitation) is then
 // mapped onto the most dominant reference mode, which fixes gamma/gamma0 (its frequency) and sigma
 // (its amplitude). The estimation starts a local search from each and keeps the best.
@@ -23,6 +24,12 @@ struct RayleighCircle {
 // 2 d_i = alpha + beta lambda_i. Nothing when the eigenvalues coincide or alpha or beta would be
 // negative (no physical material damps that way).
 std::optional<RayleighCircle> rayleigh_circle_through(const Mode& a, const Mode& b);
+
+// The circle through both modes when it is physical; otherwise the least-squares line through them
+// with the negative coefficient held at 0 (alpha 0 when the decays fit only a negative alpha, beta 0
+// when the upper mode decays slower). Noise on two decays easily tips the exact circle negative
+// where the material's alpha or beta is small; the search then starts from the nearest material.
+RayleighCircle nearest_physical_circle(const Mode& a, const Mode& b);
 
 // The eigenvalue lambda [(rad/s)^2] that this circle maps to a mode of freq_hz: the smaller root of
 // lambda - ((alpha + beta lambda)/2)^2 = (2 pi f)^2 (the underdamped branch); nothing when the circle

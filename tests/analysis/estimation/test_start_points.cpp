@@ -65,6 +65,31 @@ TEST(StartPoints, CirclesNoMaterialHasAreRefused) {
   EXPECT_FALSE(rayleigh_circle_through({500.0, 1.0, 1.0, 0.0}, {1000.0, 100.0, 1.0, 0.0}));
 }
 
+TEST(StartPoints, TheNearestPhysicalCircleHoldsTheNegativeCoefficientAtZero) {
+  const std::vector<Mode> m = true_modes();
+  // A physical circle is the exact one.
+  const RayleighCircle exact = nearest_physical_circle(m[0], m[3]);
+  EXPECT_NEAR(exact.alpha, kAlpha, 1e-7 * kAlpha);
+  EXPECT_NEAR(exact.beta, kBeta, 1e-9 * kBeta);
+  // The upper mode decays more slowly: beta 0, alpha the mean of c = 2d.
+  const RayleighCircle flat = nearest_physical_circle({500.0, 20.0, 1.0, 0.0}, {1500.0, 5.0, 1.0, 0.0});
+  EXPECT_EQ(flat.beta, 0.0);
+  EXPECT_NEAR(flat.alpha, 25.0, 1e-12);
+  // Decay growing faster than lambda: alpha 0, beta the least-squares slope through the origin.
+  const Mode a{500.0, 1.0, 1.0, 0.0}, b{1000.0, 100.0, 1.0, 0.0};
+  const RayleighCircle origin = nearest_physical_circle(a, b);
+  EXPECT_EQ(origin.alpha, 0.0);
+  const auto lambda = [](const Mode& x) {
+    const double w = 2.0 * std::numbers::pi * x.freq_hz;
+    return w * w + x.decay_per_s * x.decay_per_s;
+  };
+  const double la = lambda(a), lb = lambda(b);
+  EXPECT_NEAR(origin.beta, (2.0 * la + 200.0 * lb) / (la * la + lb * lb), 1e-12 * origin.beta);
+  // Either way every decay keeps a start: the eigenvalue map reaches the dominant mode.
+  EXPECT_TRUE(eigenvalue_for_frequency(origin, 1000.0));
+  EXPECT_TRUE(eigenvalue_for_frequency(flat, 1500.0));
+}
+
 TEST(StartPoints, EigenvalueForFrequencyInvertsTheMap) {
   const RayleighCircle c{kAlpha, kBeta};
   const std::vector<double> l0 = eigenvalues();
