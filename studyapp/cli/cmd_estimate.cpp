@@ -145,6 +145,7 @@ void register_estimate(CLI::App& app) {
     extract_impact_modes(rec);
     EstimateOptions options;
     options.perceptual.playback_db_spl = opt->playback_db;
+    options.noise_sigma = rec.noise_sigma;
     const auto start = std::chrono::steady_clock::now();
     MaterialEstimate e;
     try {
@@ -163,6 +164,7 @@ void register_estimate(CLI::App& app) {
         {"material", {{"alpha", e.material.alpha}, {"beta", e.material.beta}, {"gamma", e.material.gamma},
                       {"sigma", e.material.sigma}}},
         {"metric", {{"image", e.scores.psycho}, {"feature", e.scores.match.product}, {"hybrid", num_json(e.scores.hybrid)}}},
+        {"contact_s", e.contact_s},
         {"starts", e.starts.size()},
         {"iterations", e.iterations},
         {"seconds", seconds},
@@ -192,8 +194,8 @@ void register_estimate(CLI::App& app) {
       std::printf("start %zu: alpha %.5g beta %.5g gamma %.5g sigma %.5g -> Pi_hybrid %.6g (%zu iterations)\n", i + 1,
                   s.fitted.alpha, s.fitted.beta, s.fitted.gamma, s.fitted.sigma, s.scores.hybrid, s.iterations);
     }
-    std::printf("material: alpha %.6g 1/s, beta %.6g s, gamma %.6g m^2/s^2, sigma %.6g\n", e.material.alpha,
-                e.material.beta, e.material.gamma, e.material.sigma);
+    std::printf("material: alpha %.6g 1/s, beta %.6g s, gamma %.6g m^2/s^2, sigma %.6g (strike contact %.3g ms)\n",
+                e.material.alpha, e.material.beta, e.material.gamma, e.material.sigma, 1e3 * e.contact_s);
     std::printf("metric: Pi_psycho %.6g sone^2, Pi_MRP %.4f, Pi_hybrid %.6g; %zu modes matched; %.2f s\n",
                 e.scores.psycho, e.scores.match.product, e.scores.hybrid, e.matched_modes, seconds);
     if (!opt->output.empty()) std::printf("material file: %s\nresidual file: %s\n", opt->output.c_str(), residual.c_str());

@@ -34,6 +34,7 @@ void extract_impact_modes(ImpactRecording& r) {
   const ExtractedFeatures f = extract_features(r.whole, r.sample_rate_hz, options);
   if (f.modes.empty()) throw InputError(SourceLocation{r.path, 0, 0}, "no modes found above the noise floor");
   r.modes = f.modes;
+  r.noise_sigma = f.noise_sigma;
 }
 
 }  // namespace ms::cli

@@ -16,6 +16,7 @@ struct ImpactRecording {
   std::vector<float> whole;    // mono, as recorded (the extractor finds its own onset)
   std::vector<float> samples;  // mono, from the onset
   std::vector<Mode> modes;     // extracted by extract_impact_modes, amplitudes at the onset
+  double noise_sigma = 0.0;    // the extractor's white-noise standard deviation (full scale = 1)
 };
 
 // channel: 0-based, or -1 to mix to mono.

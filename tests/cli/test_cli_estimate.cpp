@@ -60,6 +60,8 @@ TEST(EstimateCli, AGlassBarGivesGlassBackWithTheMaterialFileAndTheReport) {
   EXPECT_NEAR(j["material"]["gamma"].get<double>() / glass.specific_modulus_m2_s2, 1.0, 0.02);
   EXPECT_GT(j["material"]["sigma"].get<double>(), 0.0);
   for (const char* k : {"image", "feature", "hybrid"}) EXPECT_TRUE(j["metric"].contains(k)) << k;
+  // The strike's contact is fitted; both sets strike with a 0.5 ms raised cosine.
+  EXPECT_NEAR(j["contact_s"].get<double>() / 0.5e-3, 1.0, 0.25);
   EXPECT_GE(j["starts"].get<int>(), 1);
   EXPECT_GT(j["iterations"].get<int>(), 0);
   EXPECT_GT(j["seconds"].get<double>(), 0.0);
