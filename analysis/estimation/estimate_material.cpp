@@ -14,11 +14,13 @@ namespace ms {
 namespace {
 
 // The modes the masking rule hears, their powers taken after the contact's low-pass (a mode far above
-// 1/contact receives almost nothing).
+// 1/contact receives almost nothing). |G| > 1 is the e^{d tau} of a mode decaying during the contact
+// (up to 1e155 for the fastest), not energy it gains: capped at 1, and a non-finite factor prunes nothing.
 ModalModel heard_modes(const ModalModel& model, const Excitation& strike, const PruneOptions& prune) {
   ModalModel struck = model;
-  for (Mode& m : struck.modes)  // a factor that overflows (a very fast mode, a long contact) prunes nothing
-    if (const double g = std::abs(contact_factor(strike, m.decay_per_s, m.freq_hz)); std::isfinite(g)) m.amp *= g;
+  for (Mode& m : struck.modes)
+    if (const double g = std::abs(contact_factor(strike, m.decay_per_s, m.freq_hz)); std::isfinite(g))
+      m.amp *= std::min(g, 1.0);
   const PruneResult r = prune_modes(struck, prune);
   return progressive_model(model, r, r.kept.size());
 }
