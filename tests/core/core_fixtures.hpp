@@ -6,8 +6,13 @@
 #include <sstream>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "studyapp/core/autopilot.hpp"
 #include "studyapp/core/export.hpp"
+#include "studyapp/core/protocol_parser.hpp"
+#include "studyapp/core/session.hpp"
+#include "studyapp/core/stimulus_cache.hpp"
 #include "support/test_util.hpp"
 
 namespace ms::testing {
@@ -40,6 +45,36 @@ inline std::string write_small_study(const test::TempDir& dir, const std::string
                    "  - {type: identify, id: id, stimuli: [low, high], labels: [low, high], repeats: 2}\n"
                    "  - {type: mushra, id: mu, reference: low, conditions: [lowq, lp]}\n" +
                        extra_blocks);
+}
+
+// The small study on disk with what opening a session on it takes: the protocol loaded, its text (the
+// store keeps it and refuses a changed one) and its stimuli's hashes.
+struct SmallStudy {
+  explicit SmallStudy(const test::TempDir& dir, const std::string& extra_blocks = "")
+      : path(write_small_study(dir, extra_blocks)), protocol(load_protocol(path)), text(file_text(path)),
+        cache(protocol, "") {}
+
+  // `participant`'s session in the store at `db`, opened at `now_ms`.
+  Session open(const std::string& participant, const std::string& db, std::int64_t now_ms,
+               const SessionStart& start = {}) {
+    return Session(protocol, text, participant, db, cache.hashes(), now_ms, start);
+  }
+
+  std::string path;
+  Protocol protocol;
+  std::string text;
+  StimulusCache cache;
+};
+
+// An answer the small study's current trial accepts: "ok", the first stimulus's label, or every
+// MUSHRA condition at 50.
+inline nlohmann::json good_answer(const Session& s) {
+  const Trial& t = s.current();
+  if (t.type == BlockType::instructions) return "ok";
+  if (t.type == BlockType::identify) return t.stimuli.at(0);  // labels equal the stimulus names
+  nlohmann::json v = nlohmann::json::object();
+  for (const auto& name : t.stimuli) v[name] = 50;
+  return v;
 }
 
 // Autopilot options for a shipped protocol (protocols/NAME), with the store and the cache in `dir`.

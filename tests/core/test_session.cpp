@@ -2,9 +2,6 @@
 // unanswered trial with the same schedule; staircase tracks resume from their committed steps.
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
-
 #include "core_fixtures.hpp"
 #include "studyapp/core/protocol_parser.hpp"
 #include "studyapp/core/session.hpp"
@@ -14,28 +11,13 @@
 namespace ms {
 namespace {
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-nlohmann::json good_answer(const Session& s) {
-  const Trial& t = s.current();
-  if (t.type == BlockType::instructions) return "ok";
-  if (t.type == BlockType::identify) return t.stimuli.at(0);  // labels equal the stimulus names
-  nlohmann::json v = nlohmann::json::object();
-  for (const auto& name : t.stimuli) v[name] = 50;
-  return v;
-}
+using testing::good_answer;
+using testing::SmallStudy;
 
 TEST(Session, AnswersAreCheckedCommittedAndAdvance) {
   test::TempDir dir;
-  const std::string path = testing::write_small_study(dir);
-  const Protocol p = load_protocol(path);
-  StimulusCache cache(p, "");
-  Session s(p, slurp(path), "P01", dir.file("r.sqlite"), cache.hashes(), 1000);
+  SmallStudy study(dir);
+  Session s = study.open("P01", dir.file("r.sqlite"), 1000);
   EXPECT_FALSE(s.resumed());
   ASSERT_EQ(s.total(), 6u);  // instructions + identify 2 stimuli x 2 repeats + one MUSHRA screen
   EXPECT_EQ(s.current().type, BlockType::instructions);
@@ -64,17 +46,15 @@ TEST(Session, AnswersAreCheckedCommittedAndAdvance) {
   // Recipe hashes are stored with the trials (mushra trial: reference, lowq, lp).
   for (const auto& row : s.store().trial_rows()) {
     if (row.block_type == "mushra") {
-      EXPECT_NE(row.hashes_json.find(cache.hash("lp")), std::string::npos);
+      EXPECT_NE(row.hashes_json.find(study.cache.hash("lp")), std::string::npos);
     }
   }
 }
 
 TEST(Session, EventsCarryTheVariantPlayed) {
   test::TempDir dir;
-  const std::string path = testing::write_small_study(dir);
-  const Protocol p = load_protocol(path);
-  StimulusCache cache(p, "");
-  Session s(p, slurp(path), "P05", dir.file("r.sqlite"), cache.hashes(), 1000);
+  SmallStudy study(dir);
+  Session s = study.open("P05", dir.file("r.sqlite"), 1000);
   s.answer("ok", 1.0, 0, 1001);
   const std::string detail = R"({"hash":"abc","set":{"amp_scale":0.7}})";
   s.log_event(EventKind::play, s.current().stimuli[0], 1002, detail);
@@ -82,21 +62,19 @@ TEST(Session, EventsCarryTheVariantPlayed) {
   ASSERT_EQ(rows.size(), 1u);
   EXPECT_EQ(rows[0].detail_json, detail);
   EXPECT_EQ(rows[0].kind, "play");
-  EXPECT_EQ(rows[0].stimulus_hash, cache.hash(s.current().stimuli[0]));
+  EXPECT_EQ(rows[0].stimulus_hash, study.cache.hash(s.current().stimuli[0]));
 }
 
 TEST(Session, ReopeningResumesAtTheFirstUnansweredTrialWithTheSameSchedule) {
   test::TempDir dir;
-  const std::string path = testing::write_small_study(dir);
-  const Protocol p = load_protocol(path);
-  StimulusCache cache(p, "");
+  SmallStudy study(dir);
   std::vector<std::vector<std::string>> first_order;
   {
-    Session s(p, slurp(path), "P02", dir.file("r.sqlite"), cache.hashes(), 1000);
+    Session s = study.open("P02", dir.file("r.sqlite"), 1000);
     for (const auto& t : s.schedule().trials) first_order.push_back(t.stimuli);
     for (int i = 0; i < 3; ++i) s.answer(good_answer(s), 100.0, 1, 1000 + i);
   }  // the program "stops" here
-  Session again(p, slurp(path), "P02", dir.file("r.sqlite"), cache.hashes(), 5000);
+  Session again = study.open("P02", dir.file("r.sqlite"), 5000);
   EXPECT_TRUE(again.resumed());
   EXPECT_EQ(again.current_index(), 3u);
   EXPECT_EQ(again.answered(), 3u);
@@ -107,20 +85,18 @@ TEST(Session, ReopeningResumesAtTheFirstUnansweredTrialWithTheSameSchedule) {
   EXPECT_EQ(again.store().count("responses"), 6);
   EXPECT_EQ(again.store().count("sessions"), 1);
   // A finished participant is refused; a second visit is asked for explicitly.
-  EXPECT_THROW(Session(p, slurp(path), "P02", dir.file("r.sqlite"), cache.hashes(), 9000), ParticipantFinished);
-  Session next(p, slurp(path), "P02", dir.file("r.sqlite"), cache.hashes(), 9000, SessionStart{true, false});
+  EXPECT_THROW(study.open("P02", dir.file("r.sqlite"), 9000), ParticipantFinished);
+  Session next = study.open("P02", dir.file("r.sqlite"), 9000, SessionStart{true, false});
   EXPECT_FALSE(next.resumed());
   EXPECT_EQ(next.current_index(), 0u);
 }
 
 TEST(Session, AChangedProtocolIsRefusedForTheSameDatabase) {
   test::TempDir dir;
-  const std::string path = testing::write_small_study(dir);
-  const Protocol p = load_protocol(path);
-  StimulusCache cache(p, "");
-  { Session s(p, slurp(path), "P03", dir.file("r.sqlite"), cache.hashes(), 1000); }
+  SmallStudy study(dir);
+  { Session s = study.open("P03", dir.file("r.sqlite"), 1000); }
   try {
-    Session s(p, slurp(path) + "# edited\n", "P03", dir.file("r.sqlite"), cache.hashes(), 1000);
+    Session s(study.protocol, study.text + "# edited\n", "P03", dir.file("r.sqlite"), study.cache.hashes(), 1000);
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("different protocol"), std::string::npos) << e.what();
@@ -134,20 +110,17 @@ AbInterval choice_scoring(Session& s, bool correct) {
 
 TEST(Session, StaircaseStepsAreCommittedAndATrackResumes) {
   test::TempDir dir;
-  const std::string path = testing::write_small_study(
-      dir, "  - {type: staircase, id: sc, stimulus: low, reference: high, parameter: amp_scale, start: 0.2,\n"
-           "     step: 0.05, down_up: [2, 1], reversals: 4}\n");
-  const Protocol p = load_protocol(path);
-  StimulusCache cache(p, "");
+  SmallStudy study(dir, "  - {type: staircase, id: sc, stimulus: low, reference: high, parameter: amp_scale, start: 0.2,\n"
+                        "     step: 0.05, down_up: [2, 1], reversals: 4}\n");
   const bool pattern[] = {true, true, false, true, true, false, true, true, false, false, true, true, true, true};
   std::size_t used = 0;
   {
-    Session s(p, slurp(path), "P04", dir.file("r.sqlite"), cache.hashes(), 1000);
+    Session s = study.open("P04", dir.file("r.sqlite"), 1000);
     while (s.current().type != BlockType::staircase) s.answer(good_answer(s), 1.0, 1, 1000);
     for (; used < 5; ++used) s.staircase_step(choice_scoring(s, pattern[used]), 300.0, 2000);
     EXPECT_EQ(s.staircase().levels().size(), 5u);
   }
-  Session s(p, slurp(path), "P04", dir.file("r.sqlite"), cache.hashes(), 3000);
+  Session s = study.open("P04", dir.file("r.sqlite"), 3000);
   ASSERT_TRUE(s.resumed());
   ASSERT_EQ(s.current().type, BlockType::staircase);
   EXPECT_EQ(s.staircase().levels().size(), 5u);  // rebuilt from the committed steps
