@@ -9,6 +9,7 @@
 #include "studyapp/core/export.hpp"
 #include "studyapp/core/results_store.hpp"
 #include "studyapp/core/schedule.hpp"
+#include "studyapp/core/store_location.hpp"
 #include "studyapp/web/web_token.hpp"
 #include "synthesis/bounded_file.hpp"
 #include "synthesis/input_error.hpp"
@@ -18,11 +19,6 @@ namespace ms::web {
 namespace fs = std::filesystem;
 
 namespace {
-
-bool store_exists(const std::string& db_path) {
-  std::error_code ec;
-  return fs::exists(db_path, ec) && fs::file_size(db_path, ec) > 0;
-}
 
 // Runs the core's export into a fresh private folder, hands the summary and folder to `use`, and
 // removes the folder whatever happens.
