@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Fuzzing as a habit: builds the libFuzzer targets of tests/fuzz/ with clang into build-fuzz/ (never
-# build/) and runs each for FUZZ_SECONDS (default 45: with the ~90 s build about 4.5 min of CI on two
+# build/) and runs each for FUZZ_SECONDS (default 45: with the ~90 s build about 5.5 min of CI on two
 # cores) from its seed corpus and the regression inputs.
 # A crash, an uncaught exception other than InputError, an input taking more than 10 s (-timeout) or
 # more than 2 GiB of memory (-rss_limit_mb, -malloc_limit_mb) fails; the input that did it is kept in
@@ -9,7 +9,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${FUZZ_SECONDS:-45}
-targets=(${FUZZ_TARGETS:-paramset protocol csv wav})
+targets=(${FUZZ_TARGETS:-paramset protocol csv wav webmushra})
 lock=/tmp/ms-build.lock
 
 if ! command -v clang++ >/dev/null; then

@@ -66,6 +66,12 @@ const StimulusSource* Protocol::find_stimulus(const std::string& name) const {
   return nullptr;
 }
 
+const Block* Protocol::find_block(const std::string& id) const {
+  for (const auto& b : blocks)
+    if (b.id == id) return &b;
+  return nullptr;
+}
+
 std::string anchor_name(const std::string& reference, double hz) {
   return reference + "~lp" + std::to_string(std::llround(hz));
 }

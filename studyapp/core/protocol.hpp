@@ -157,6 +157,7 @@ struct Protocol {
   std::size_t unparsed_blocks = 0;
 
   const StimulusSource* find_stimulus(const std::string& name) const;
+  const Block* find_block(const std::string& id) const;
 };
 
 // Name of the implicit low-pass anchor of `reference` at `hz` ("full~lp3500").

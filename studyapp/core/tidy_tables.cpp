@@ -96,13 +96,6 @@ std::string factor_of(const StimulusSource* s, const std::string& name) {
   return "";
 }
 
-const Block* find_block(const Protocol* p, const std::string& id) {
-  if (!p) return nullptr;
-  for (const Block& b : p->blocks)
-    if (b.id == id) return &b;
-  return nullptr;
-}
-
 }  // namespace
 
 const std::vector<std::string>& tidy_key_columns() { return kBase; }
@@ -152,7 +145,7 @@ std::map<std::string, std::string> tidy_tables(const std::vector<ResponseRow>& r
     if (cols == type_columns().end()) continue;  // instructions
     const auto pit = protocols.find(r.study);
     const Protocol* protocol = pit == protocols.end() ? nullptr : &pit->second;
-    const Block* block = find_block(protocol, r.block_id);
+    const Block* block = protocol ? protocol->find_block(r.block_id) : nullptr;
     std::string& csv = out[r.block_type + ".csv"];
     if (csv.empty()) {
       std::vector<std::string> header = kBase;

@@ -125,7 +125,7 @@ class Importer {
     else note(root, "testId", "missing: the study id is the config's file name, '" + fallback + "'");
     out_["study"] = study;
     out_["title"] = root["testname"] ? r_.text(root["testname"], "testname") : study;
-    if (root["showButtonPreviousPage"] && root["showButtonPreviousPage"].as<std::string>() == "true")
+    if (is_true(root["showButtonPreviousPage"]))
       note(root["showButtonPreviousPage"], "showButtonPreviousPage",
            "not carried over: an answered trial is committed and cannot be revisited");
     if (root["remoteService"])
@@ -161,15 +161,16 @@ class Importer {
   bool is_true(const YAML::Node& n) const { return n && n.IsScalar() && n.Scalar() == "true"; }
 
   // A pages list: page maps, nested lists, and "random" as a list's first element.
-  void pages(const YAML::Node& list, const std::string& path) {
+  void pages(const YAML::Node& list, const std::string& path, int depth = 0) {
     if (!list.IsSequence()) r_.fail(list, path, "expected a list of pages");
+    if (depth > 8) r_.fail(list, path, "page lists nested more than 8 deep");
     for (std::size_t i = 0; i < list.size(); ++i) {
       const std::string p = path + "[" + std::to_string(i) + "]";
       const YAML::Node item = list[i];
       if (item.IsScalar() && item.Scalar() == "random" && i == 0)
         note(item, p, "random page order not carried over: these pages run in the written order (trials are "
                       "randomised within each block)");
-      else if (item.IsSequence()) pages(item, p);
+      else if (item.IsSequence()) pages(item, p, depth + 1);
       else if (item.IsMap()) page(item, p);
       else r_.fail(item, p, "expected a page (a map with 'type'), a list of pages, or \"random\" first in a list");
     }
@@ -254,12 +255,14 @@ class Importer {
     if (rel.is_absolute() || written.find("://") != std::string::npos)
       r_.fail(path_node, p, "'" + written + "' must be a path relative to webMUSHRA's root folder");
     fs::path found;
+    std::error_code ec;
     for (const fs::path& base : {root_, config_dir_}) {
-      const fs::path candidate = fs::weakly_canonical(base / rel);
-      const std::string inside = fs::relative(candidate, fs::weakly_canonical(base)).string();
+      const fs::path candidate = fs::weakly_canonical(base / rel, ec);
+      const std::string inside = ec ? "" : fs::relative(candidate, fs::weakly_canonical(base, ec), ec).string();
+      if (ec) r_.fail(path_node, p, "'" + written + "' is not a usable path: " + ec.message());
       if (inside.empty() || inside.rfind("..", 0) == 0)
         r_.fail(path_node, p, "'" + written + "' leaves webMUSHRA's root folder " + base.string());
-      if (fs::is_regular_file(candidate)) {
+      if (fs::is_regular_file(candidate, ec)) {
         found = candidate;
         break;
       }
@@ -286,7 +289,8 @@ class Importer {
     }
     if (!files_.count(name)) {
       files_[name] = found;
-      std::string out = fs::relative(found, fs::weakly_canonical(protocol_dir_)).generic_string();
+      std::string out = fs::relative(found, fs::weakly_canonical(protocol_dir_, ec), ec).generic_string();
+      if (ec || out.empty()) r_.fail(path_node, p, "cannot be written relative to " + protocol_dir_.string());
       if (out.rfind("..", 0) == 0) allow_outside_ = true;
       YAML::Node s;
       s["file"] = out;
@@ -372,7 +376,7 @@ class Importer {
     const auto label = [&](std::size_t i) {
       const YAML::Node point = resp[i];
       const std::string at = p + ".response[" + std::to_string(i) + "]";
-      if (!point.IsMap()) r_.fail(point, at, "expected a Likert point {value, label}");
+      if (!point.IsMap() || (!point["label"] && !point["value"])) r_.fail(point, at, "expected a Likert point {value, label}");
       return r_.text(point["label"] ? point["label"] : point["value"], at + (point["label"] ? ".label" : ".value"));
     };
     YAML::Node attribute;
@@ -410,8 +414,11 @@ class Importer {
         const YAML::Node resp = item["response"];
         if (!resp || !resp.IsSequence() || resp.size() == 0) r_.fail(item, qp + ".response", "expected a list of {value, label}");
         YAML::Node options = flow(YAML::Node(YAML::NodeType::Sequence));
-        for (std::size_t k = 0; k < resp.size(); ++k)
-          options.push_back(r_.text(resp[k]["value"] ? resp[k]["value"] : resp[k], qp + ".response[" + std::to_string(k) + "]"));
+        for (std::size_t k = 0; k < resp.size(); ++k) {
+          const std::string at = qp + ".response[" + std::to_string(k) + "]";
+          if (!resp[k].IsMap() || !resp[k]["value"]) r_.fail(resp[k], at, "expected a Likert point {value, label}");
+          options.push_back(r_.text(resp[k]["value"], at + ".value"));
+        }
         q["options"] = options;
       } else if (type == "number") {
         note(item["type"], qp + ".type", "a number question is asked as free text (no range check)");

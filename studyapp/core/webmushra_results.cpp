@@ -18,13 +18,6 @@ namespace ms {
 
 namespace {
 
-const Block* find_block(const Protocol* p, const std::string& id) {
-  if (!p) return nullptr;
-  for (const Block& b : p->blocks)
-    if (b.id == id) return &b;
-  return nullptr;
-}
-
 // The name webMUSHRA gives a MUSHRA stimulus: "reference", "anchor35", "anchor70", else its own.
 std::string mushra_stimulus(const Protocol* p, const MushraBlock* block, const std::string& name) {
   if (!block || !block->reference) return name;
@@ -73,7 +66,7 @@ std::map<std::string, std::string> webmushra_tables(const std::vector<ResponseRo
   for (const ResponseRow& r : rows) {
     const auto pit = protocols.find(r.study);
     const Protocol* protocol = pit == protocols.end() ? nullptr : &pit->second;
-    const Block* block = find_block(protocol, r.block_id);
+    const Block* block = protocol ? protocol->find_block(r.block_id) : nullptr;
     const auto add = [&](const std::string& table, std::vector<std::string> cells) {
       std::string& csv = out[table];
       if (csv.empty()) {

@@ -37,3 +37,4 @@ TEST(FuzzRegressions, ParameterSets) { EXPECT_GE(replay("paramset", ms::fuzz::pa
 TEST(FuzzRegressions, Protocols) { EXPECT_GE(replay("protocol", ms::fuzz::protocol), 3u); }
 TEST(FuzzRegressions, Csv) { EXPECT_GE(replay("csv", ms::fuzz::csv), 4u); }
 TEST(FuzzRegressions, Wav) { EXPECT_GE(replay("wav", ms::fuzz::wav), 5u); }
+TEST(FuzzRegressions, WebMushraConfigs) { EXPECT_GE(replay("webmushra", ms::fuzz::webmushra), 3u); }

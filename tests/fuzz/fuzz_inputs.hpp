@@ -15,6 +15,7 @@
 #include "synthesis/tidy_csv.hpp"
 #include "studyapp/core/protocol_parser.hpp"
 #include "studyapp/core/protocol_validator.hpp"
+#include "studyapp/core/webmushra_import.hpp"
 #include "synthesis/audio_file.hpp"
 #include "synthesis/csv.hpp"
 #include "synthesis/input_error.hpp"
@@ -92,6 +93,29 @@ inline void wav(std::string_view bytes) {
     (void)mono(a);
     if (a.channels > 1) (void)mono(a, a.channels - 1);
   });
+}
+
+// The webMUSHRA config importer (its page readers, path resolution against webMUSHRA's root, the
+// protocol it writes parsed and validated), on a config beside two short WAV files it may name
+// (configs/audio/a.wav, configs/audio/b.wav).
+inline void webmushra(std::string_view bytes) {
+  static const std::filesystem::path root = [] {
+    const auto r = scratch_dir() / "webmushra";
+    std::filesystem::create_directories(r / "configs/audio");
+    Audio a;
+    a.sample_rate_hz = 44100;
+    a.samples.assign(441, 0.0f);
+    for (std::size_t i = 0; i < a.samples.size(); ++i) a.samples[i] = float(i % 50) / 100.0f;
+    write_wav((r / "configs/audio/a.wav").string(), a, SampleFormat::pcm16);
+    write_wav((r / "configs/audio/b.wav").string(), a, SampleFormat::pcm16);
+    return r;
+  }();
+  const std::string config = (root / "configs/fuzz.yaml").string();
+  {
+    std::ofstream out(config, std::ios::binary | std::ios::trunc);
+    out.write(bytes.data(), std::streamsize(bytes.size()));
+  }
+  refused_cleanly([&] { (void)import_webmushra(config, (root / "study.yaml").string()); });
 }
 
 }  // namespace ms::fuzz
