@@ -240,6 +240,8 @@ AdjustBlock parse_adjust(const YamlReader& r, const YAML::Node& n, const std::st
   for (std::size_t i = 0; sl && i < sl.size(); ++i) {
     const std::string sp = idx(p + ".sliders", i);
     r.check_keys(sl[i], sp, {"key", "min", "max", "label", "low", "high", "show_value"});
+    for (const char* key : {"key", "min", "max"})
+      if (!sl[i][key]) r.fail(sl[i], sp, std::string("missing '") + key + "' (a slider is {key, min, max})");
     Slider s{r.text(sl[i]["key"], sp + ".key"), r.number(sl[i]["min"], sp + ".min"),
              r.number(sl[i]["max"], sp + ".max"), r.where(sl[i]["key"], sp + ".key")};
     if (!(s.min < s.max)) r.fail(sl[i]["max"], sp + ".max", "must be greater than min");
