@@ -269,12 +269,13 @@ class Importer {
     }
     if (found.empty())
       r_.fail(path_node, p, "audio file '" + written + "' not found under " + root_.string() + " or " + config_dir_.string());
-    double rate = 0;
-    try {
-      rate = read_audio(found.string()).sample_rate_hz;
-    } catch (const InputError& e) {
-      r_.fail(path_node, p, e.problem());
-    }
+    // Each file is read once, however many pages name it.
+    double& rate = rates_hz_[found];
+    if (rate == 0) try {
+        rate = read_audio(found.string()).sample_rate_hz;
+      } catch (const InputError& e) {
+        r_.fail(path_node, p, e.problem());
+      }
     if (sample_rate_hz_ == 0) sample_rate_hz_ = rate;
     else if (rate != sample_rate_hz_)
       r_.fail(path_node, p, "'" + written + "' is sampled at " + std::to_string(int(rate)) + " Hz, the files before it at " +
@@ -435,6 +436,7 @@ class Importer {
   fs::path config_dir_, root_, protocol_dir_;
   YAML::Node out_, stimuli_{YAML::NodeType::Map}, blocks_{YAML::NodeType::Sequence};
   std::map<std::string, fs::path> files_;  // stimulus name -> the file it plays
+  std::map<fs::path, double> rates_hz_;    // file -> its sample rate
   std::set<std::string> block_ids_;
   std::vector<std::string> notes_;
   double sample_rate_hz_ = 0;

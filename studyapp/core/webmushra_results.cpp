@@ -102,7 +102,8 @@ std::map<std::string, std::string> webmushra_tables(const std::vector<ResponseRo
       for (const auto& [name, score] : mushra->scores)
         add("mushra.csv", {mushra_stimulus(protocol, mb, name), mushra_score_json(score).dump(), milliseconds(r.rt_ms), ""});
     } else if (const auto* choice = std::get_if<ChoiceAnswer>(&answer);
-               choice && block && std::get<AbBlock>(block->body).mode == AbMode::preference) {
+               choice && block && std::get_if<AbBlock>(&block->body) &&
+               std::get<AbBlock>(block->body).mode == AbMode::preference) {
       const std::optional<WrittenPair> pair = written_pair(block, at(0), at(1));
       if (!pair) continue;
       const std::string chosen = choice->chosen == AbInterval::a ? at(0) : at(1);
