@@ -1,7 +1,8 @@
 // Effects that extend the plain modal model with physics it leaves out.
 //  - support damping (Zheng & James; Sterling et al.): contacts add damping per mode, the diagonal
-//    of G = sum_k c_k Phi_k^T (mu I + (1 - mu) n n^T) Phi_k. Measured decay is then the material law
-//    plus a one-sided excess: here a constant, per-mode values, or exponential draws (seeded).
+//    of G = sum_k c_k Phi_k^T (mu I + (1 - mu) n n^T) Phi_k (contact_damping.hpp, for objects whose
+//    mode shapes we have). Measured decay is then the material law plus a one-sided excess: the
+//    contacts' G, and/or a constant, per-mode values, or exponential draws (seeded).
 //  - mode doublets: a degenerate pair split by imperfection into f (1 -+ split/2), which beats.
 //  - background noise: stationary white Gaussian noise at a given SNR, as in a real recording room.
 //  - reverberation: a room tail common to all bands, white Gaussian noise decaying 60 dB in RT60
@@ -10,8 +11,10 @@
 //    the attack decaying 60 dB within a few ms, its energy relative to the direct sound.
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <vector>
 
+#include "synthesis/contact_damping.hpp"
 #include "synthesis/modal_model.hpp"
 
 namespace ms {
@@ -21,9 +24,15 @@ struct SupportDamping {
   std::vector<double> per_mode_decay_per_s;  // added to mode n (if given)
   double exponential_mean_per_s = 0.0;     // if > 0: each mode adds an Exp(mean) draw
   std::uint64_t seed = 0;
+  // Zheng-James contacts (contact_damping.hpp): resolving a bar or plate set adds what they give,
+  // from the object's mode shapes at the contacts; apply_support_damping does not see them.
+  std::vector<SupportContact> contacts = {};
+  double mu = 0.0;                      // friction coefficient, [0, 1]
+  std::optional<double> c_per_s = {};   // c_k of the contacts without their own
 };
 
-// Adds the support's decay to each mode (modal frequency unchanged: the extra damping is small).
+// Adds the support's constant, per-mode and exponential decay to each mode (modal frequency
+// unchanged: the extra damping is small).
 void apply_support_damping(ModalModel& model, const SupportDamping& support);
 
 struct Doublets {

@@ -3,12 +3,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <filesystem>
 #include <numbers>
 #include <optional>
 
 #include "synthesis/bounded_file.hpp"
+#include "synthesis/contact_damping.hpp"
 #include "synthesis/csv.hpp"
 #include "synthesis/damping_law.hpp"
 #include "synthesis/masking_pruning.hpp"
@@ -34,10 +36,13 @@ struct ObjectSpec {
   std::vector<int> orders;
   std::vector<std::string> hit_names;
   std::vector<std::vector<double>> hit_gains;
+  std::vector<std::vector<double>> contact_shapes;  // [k][n]: mode shape n at contact k
 };
 
-// The object's modes up to max_lambda0_of_unit, or (unit_scale_unknown) only its first mode.
-ObjectSpec object_spec(const ObjectRecipe& o, double max_lambda0_of_unit, bool unit_scale_unknown) {
+// The object's modes up to max_lambda0_of_unit, or (unit_scale_unknown) only its first mode; the mode
+// shapes at the hit points and at `contacts` (bar, plate).
+ObjectSpec object_spec(const ObjectRecipe& o, double max_lambda0_of_unit, bool unit_scale_unknown,
+                       const std::vector<SupportContact>& contacts = {}) {
   ObjectSpec spec;
   if (o.type == ObjectType::eigenvalues) {
     spec.lambda0 = o.lambda0;
@@ -53,6 +58,7 @@ ObjectSpec object_spec(const ObjectRecipe& o, double max_lambda0_of_unit, bool u
     spec.hit_names.push_back(h.name);
     positions.push_back(h.position);
   }
+  for (const SupportContact& c : contacts) positions.push_back(c.position);
   const std::size_t max_modes = unit_scale_unknown ? 1 : o.max_modes;
   ObjectModes om;
   if (bar) {
@@ -69,7 +75,8 @@ ObjectSpec object_spec(const ObjectRecipe& o, double max_lambda0_of_unit, bool u
   }
   spec.lambda0 = om.lambda0;
   spec.orders = om.circumferential_order;
-  spec.hit_gains = om.gains;
+  spec.hit_gains.assign(om.gains.begin(), om.gains.begin() + std::ptrdiff_t(spec.hit_names.size()));
+  spec.contact_shapes.assign(om.gains.begin() + std::ptrdiff_t(spec.hit_names.size()), om.gains.end());
   return spec;
 }
 
@@ -173,9 +180,24 @@ DampingLaw object_law(const ParamSetRecipe& r, const std::optional<Material>& ma
   return *material->hybrid;
 }
 
-// An object's modes below Nyquist, with the circumferential order of each (for doublets).
+// The decay support_damping's contacts add to each of the object's modes `kept` (indices into spec).
+std::vector<double> recipe_contact_decay(const SupportDamping& support, const ObjectSpec& spec,
+                                         const std::vector<std::size_t>& kept) {
+  std::vector<std::vector<double>> shapes;
+  std::vector<double> c_per_s, normal_deg;
+  for (std::size_t k = 0; k < support.contacts.size(); ++k) {
+    std::vector<double>& shape = shapes.emplace_back();
+    for (std::size_t i : kept) shape.push_back(spec.contact_shapes[k][i]);
+    c_per_s.push_back(support.contacts[k].c_per_s.value_or(support.c_per_s.value_or(0.0)));
+    normal_deg.push_back(support.contacts[k].normal_deg);
+  }
+  return contact_decay_per_s(shapes, c_per_s, normal_deg, support.mu, kept.size());
+}
+
+// An object's modes below Nyquist, with the circumferential order of each (for doublets) and the decay
+// support_damping's contacts add to each.
 ModalModel object_modes(const ParamSetRecipe& r, const Confinement* confinement, std::vector<int>& orders,
-                        std::vector<std::string>& warnings) {
+                        std::vector<double>& contact_decay, std::vector<std::string>& warnings) {
   const std::optional<Material> material = named_material(r, confinement);
   const DampingLaw law = object_law(r, material);
   const double gamma = r.specific_modulus_m2_s2.value_or(material ? material->specific_modulus_m2_s2 : 0.0);
@@ -187,27 +209,32 @@ ModalModel object_modes(const ParamSetRecipe& r, const Confinement* confinement,
   if (r.fundamental_hz)
     scale = std::pow(2.0 * std::numbers::pi * *r.fundamental_hz, 2) / object_spec(*r.object, 0.0, true).lambda0.at(0);
   const double max_lambda0 = std::pow(2.0 * std::numbers::pi * nyquist, 2) * 1.2 / scale;  // damping lowers f
-  const ObjectSpec spec = object_spec(*r.object, max_lambda0, false);
+  const ObjectSpec spec = object_spec(*r.object, max_lambda0, false,
+                                      r.support_damping ? r.support_damping->contacts : std::vector<SupportContact>{});
   // The hit point sets the amplitudes: the mode shapes at that point.
   const std::size_t hit = r.hit.empty() ? 0 : hit_index(r.origin, r.hit, spec.hit_names);
   std::size_t overdamped = 0;
   ModalModel model = modes_from_eigenvalues(spec.lambda0, law, scale, amp_scale, spec.hit_gains[hit], &overdamped);
   if (overdamped > 0) warnings.push_back(std::to_string(overdamped) + " overdamped mode(s) dropped");
-  // Keep the circumferential orders aligned with the surviving modes.
-  std::vector<int> sounding;
+  // Keep the circumferential orders (and the contacts' shapes) aligned with the surviving modes.
+  std::vector<std::size_t> sounding;
   for (std::size_t i = 0; i < spec.lambda0.size(); ++i) {
     const double lambda = scale * spec.lambda0[i], d = law.decay_per_s(lambda);
-    if (lambda - d * d > 0) sounding.push_back(spec.orders[i]);
+    if (lambda - d * d > 0) sounding.push_back(i);
   }
   // An analytic object has infinitely many modes: truncate the series at Nyquist (no warning;
   // only modes a person listed explicitly warn when they cannot sound).
   std::vector<Mode> below;
+  std::vector<std::size_t> kept;
   for (std::size_t i = 0; i < model.modes.size(); ++i)
     if (model.modes[i].freq_hz < nyquist) {
       below.push_back(model.modes[i]);
-      orders.push_back(sounding[i]);
+      kept.push_back(sounding[i]);
+      orders.push_back(spec.orders[sounding[i]]);
     }
   model.modes = std::move(below);
+  if (r.support_damping && !r.support_damping->contacts.empty())
+    contact_decay = recipe_contact_decay(*r.support_damping, spec, kept);
   if (model.modes.size() > kMaxModes)
     r.origin.fail("", "too many modes (" + std::to_string(model.modes.size()) + " > 200000)");
   return model;
@@ -268,10 +295,12 @@ ParamSet resolve(const ParamSetRecipe& r, const Confinement* confinement) {
   const auto format_at = r.origin.written_at.find("output.format");
   p.format_where = format_at != r.origin.written_at.end() ? format_at->second : SourceLocation{r.origin.file, 0, 0};
   std::vector<int> orders;
-  p.model = r.object ? object_modes(r, confinement, orders, p.warnings) : listed_modes(r, confinement);
+  std::vector<double> contact_decay;  // per mode, from support_damping's contacts
+  p.model = r.object ? object_modes(r, confinement, orders, contact_decay, p.warnings) : listed_modes(r, confinement);
   if (r.phase == OnsetPhase::cosine)
     for (Mode& m : p.model.modes) m.phase_rad += 0.5 * std::numbers::pi;  // sin(x + pi/2) = cos x
   if (r.support_damping) apply_support_damping(p.model, *r.support_damping);
+  for (std::size_t i = 0; i < contact_decay.size(); ++i) p.model.modes[i].decay_per_s += contact_decay[i];
   if (r.doublets) apply_recipe_doublets(r, p.model, orders);
   if (r.prune && !p.model.modes.empty()) apply_recipe_prune(r, p);
   if (p.model.modes.empty()) r.origin.fail("", "the model has no modes");

@@ -56,6 +56,7 @@ struct RecipeReader {
   void object_model(const YAML::Node& root) const;
   void excitation(const YAML::Node& node) const;
   void effects(const YAML::Node& fx) const;
+  void support_contacts(const YAML::Node& support, SupportDamping& sd) const;
   void doublets(const YAML::Node& node) const;
   void prune(const YAML::Node& node) const;
   void renderer(const YAML::Node& root) const;
@@ -263,8 +264,10 @@ void RecipeReader::effects(const YAML::Node& fx) const {
   }
   if (const YAML::Node s = fx["support_damping"]) {
     const std::string path = "effects.support_damping";
-    r.check_keys(s, path, {"extra_decay_per_s", "per_mode_decay_per_s", "exponential_mean_per_s", "seed"});
+    r.check_keys(s, path, {"extra_decay_per_s", "per_mode_decay_per_s", "exponential_mean_per_s", "seed",
+                           "contacts", "mu", "c"});
     SupportDamping& sd = out.support_damping.emplace();
+    support_contacts(s, sd);
     if (s["extra_decay_per_s"]) sd.extra_decay_per_s = r.non_negative(s["extra_decay_per_s"], path + ".extra_decay_per_s");
     if (s["per_mode_decay_per_s"]) {
       sd.per_mode_decay_per_s = r.numbers(s["per_mode_decay_per_s"], path + ".per_mode_decay_per_s");
@@ -276,6 +279,45 @@ void RecipeReader::effects(const YAML::Node& fx) const {
     sd.seed = seed(s, path);
   }
   if (fx["doublets"]) doublets(fx["doublets"]);
+}
+
+// effects.support_damping's Zheng-James keys: contacts (a position, or {position, c, normal_deg}), mu, c.
+void RecipeReader::support_contacts(const YAML::Node& s, SupportDamping& sd) const {
+  const std::string path = "effects.support_damping";
+  const YAML::Node contacts = s["contacts"];
+  if (!contacts) {
+    for (const char* k : {"mu", "c"})
+      if (s[k]) r.fail(s[k], join(path, k), "applies to 'contacts' (none are given)");
+    return;
+  }
+  const std::string list = join(path, "contacts");
+  if (!out.object || out.object->type == ObjectType::eigenvalues)
+    r.fail(contacts, list, "contacts need an object's mode shapes: 'object: {type: bar}' or 'plate'");
+  if (!contacts.IsSequence() || contacts.size() == 0)
+    r.fail(contacts, list, "expected a list of contacts: a position, or {position, c, normal_deg}");
+  const bool bar = out.object->type == ObjectType::bar;
+  const double hi = bar ? 1.0 : 0.999;
+  const std::string range = bar ? "[0, 1] (of the length)" : "[0, 0.999] (of the radius)";
+  if (!s["mu"]) r.fail(s, path, "contacts need 'mu' (the friction coefficient, in [0, 1])");
+  sd.mu = within(s["mu"], join(path, "mu"), 0.0, 1.0, "[0, 1]");
+  if (s["c"]) sd.c_per_s = r.non_negative(s["c"], join(path, "c"));
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    const YAML::Node node = contacts[k];
+    const std::string at = list + "[" + std::to_string(k) + "]";
+    SupportContact& contact = sd.contacts.emplace_back();
+    if (!node.IsMap()) {
+      contact.position = within(node, at, 0.0, hi, range);
+    } else {
+      r.check_keys(node, at, {"position", "c", "normal_deg"});
+      if (!node["position"]) r.fail(node, at, "missing 'position'");
+      contact.position = within(node["position"], join(at, "position"), 0.0, hi, range);
+      if (node["c"]) contact.c_per_s = r.non_negative(node["c"], join(at, "c"));
+      if (node["normal_deg"])
+        contact.normal_deg = within(node["normal_deg"], join(at, "normal_deg"), 0.0, 90.0, "[0, 90] degrees");
+    }
+    if (!contact.c_per_s && !sd.c_per_s)
+      r.fail(node, at, "needs 'c': its own ({position, c}) or the support's (support_damping.c)");
+  }
 }
 
 void RecipeReader::doublets(const YAML::Node& d) const {

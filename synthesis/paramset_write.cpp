@@ -57,6 +57,7 @@ struct RecipeWriter {
   void material(const ParamSetRecipe& r);
   void excitation(const Excitation& e);
   void effects(const ParamSetRecipe& r);
+  void support_contacts(const SupportDamping& s);
   void prune(const PruneRecipe& p);
   void renderer(const ParamSetRecipe& r);
   void level(const OutputLevel& l);
@@ -151,6 +152,7 @@ void RecipeWriter::effects(const ParamSetRecipe& r) {
     if (!s->per_mode_decay_per_s.empty()) numbers("per_mode_decay_per_s", s->per_mode_decay_per_s);
     if (s->exponential_mean_per_s != 0.0) number("exponential_mean_per_s", s->exponential_mean_per_s);
     if (s->seed != 0) seed(s->seed);
+    if (!s->contacts.empty()) support_contacts(*s);
     end();
   }
   if (const auto& d = r.doublets) {
@@ -169,6 +171,26 @@ void RecipeWriter::effects(const ParamSetRecipe& r) {
     seeded_noise("transient", {{"level_db", r.transient.level_db}, {"duration_ms", r.transient.duration_ms}},
                  r.transient.seed);
   out << YAML::EndMap;
+}
+
+// A contact without its own c and with the normal along the displacement is its position alone.
+void RecipeWriter::support_contacts(const SupportDamping& s) {
+  key("contacts");
+  out << YAML::Flow << YAML::BeginSeq;
+  for (const SupportContact& c : s.contacts) {
+    if (!c.c_per_s && c.normal_deg == 0.0) {
+      out << exact_number(c.position);
+      continue;
+    }
+    out << YAML::Flow << YAML::BeginMap;
+    number("position", c.position);
+    if (c.c_per_s) number("c", *c.c_per_s);
+    if (c.normal_deg != 0.0) number("normal_deg", c.normal_deg);
+    end();
+  }
+  out << YAML::EndSeq;
+  number("mu", s.mu);
+  if (s.c_per_s) number("c", *s.c_per_s);
 }
 
 void RecipeWriter::prune(const PruneRecipe& p) {

@@ -22,6 +22,9 @@ excitation: {type: impulse}
 level: {normalize: none}
 )";
 
+const std::string kSupportBar = "duration_s: 1\nobject: {type: bar, length_m: 0.3, thickness_m: 0.01}\n"
+                                "material: ren2013/wood\n";
+
 ParamSet parse(const std::string& text, const std::vector<std::string>& sets = {}) {
   return parse_paramset(text, "set.yaml", ".", sets);
 }
@@ -190,6 +193,24 @@ TEST(ParamSet, EveryMistakeGetsOneLineWithLocation) {
       {"impulse with contact", "duration_s: 1\nmodes: [{freq_hz: 100, decay_per_s: 1, amp: 1}]\n"
                                "excitation: {type: impulse, contact_s: 0.001}\n",
        "set.yaml:3:40", "no contact duration"},
+      {"support contacts on listed modes", "duration_s: 1\nmodes: [{freq_hz: 100, decay_per_s: 1, amp: 1}]\n"
+                                           "effects: {support_damping: {contacts: [0.5], mu: 0.3, c: 1}}\n",
+       "set.yaml:3:39", "contacts need an object's mode shapes"},
+      {"support contact key", kSupportBar + "effects: {support_damping: {contacts: [{positon: 0.5}], mu: 0.3, c: 1}}\n",
+       "set.yaml:4:41", "did you mean 'position'"},
+      {"support contact off the bar", kSupportBar + "effects: {support_damping: {contacts: [0.5, 1.5], mu: 0.3, c: 1}}\n",
+       "set.yaml:4:45", "effects.support_damping.contacts[1]: must lie in [0, 1]"},
+      {"support contact without c", kSupportBar + "effects: {support_damping: {contacts: [0.5], mu: 0.3}}\n",
+       "set.yaml:4:40", "needs 'c'"},
+      {"support contacts without mu", kSupportBar + "effects: {support_damping: {contacts: [0.5], c: 1}}\n",
+       "set.yaml:4:28", "contacts need 'mu'"},
+      {"support mu out of range", kSupportBar + "effects: {support_damping: {contacts: [0.5], mu: 1.5, c: 1}}\n",
+       "set.yaml:4:50", "effects.support_damping.mu: must lie in [0, 1]"},
+      {"support normal out of range",
+       kSupportBar + "effects: {support_damping: {contacts: [{position: 0, normal_deg: 120}], mu: 0.3, c: 1}}\n",
+       "set.yaml:4:66", "must lie in [0, 90] degrees"},
+      {"support mu without contacts", kSupportBar + "effects: {support_damping: {extra_decay_per_s: 1, mu: 0.3}}\n",
+       "set.yaml:4:55", "applies to 'contacts'"},
   };
   for (const BadCase& c : cases) {
     const std::string msg = error_of(c.text);

@@ -103,6 +103,13 @@ TEST(ParamSetRecipe, WritesEachKeyOnItsLine) {
       {kModes + "effects: {support_damping: {extra_decay_per_s: 1, per_mode_decay_per_s: [2], "
                 "exponential_mean_per_s: 3, seed: 4}}\n",
        "effects:\n  support_damping: {extra_decay_per_s: 1, per_mode_decay_per_s: [2], exponential_mean_per_s: 3, seed: 4}"},
+      {kBar + "effects: {support_damping: {contacts: [0.5, {position: 0, c: 4, normal_deg: 90}, {position: 1, c: 2}], "
+              "mu: 0.3, c: 10, exponential_mean_per_s: 1, seed: 2}}\n",
+       "  support_damping: {exponential_mean_per_s: 1, seed: 2, contacts: [0.5, {position: 0, c: 4, normal_deg: 90}, "
+       "{position: 1, c: 2}], mu: 0.3, c: 10}"},
+      {"duration_s: 0.5\nmaterial: ren2013/glass\nobject: {type: plate, radius_m: 0.1, thickness_m: 0.002}\n"
+       "effects: {support_damping: {contacts: [{position: 0.999, c: 1e-3}], mu: 0}}\n",
+       "  support_damping: {contacts: [{position: 0.999, c: 0.001}], mu: 0}"},
       {kModes + "effects: {doublets: {split_rel: 0.01, balance: 0.25, min_order: 0}}\n",
        "  doublets: {split_rel: 0.01, balance: 0.25, min_order: 0}"},
       {kModes + "effects: {doublets: {split_hz: 2}}\n", "  doublets: {split_hz: 2}"},
