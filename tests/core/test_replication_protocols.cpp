@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
+#include <numbers>
 #include <set>
 #include <string>
 #include <variant>
@@ -14,6 +16,7 @@
 #include "studyapp/core/protocol_validator.hpp"
 #include "studyapp/core/schedule.hpp"
 #include "support/test_util.hpp"
+#include "synthesis/paramset.hpp"
 
 namespace {
 
@@ -178,6 +181,53 @@ TEST(ReplicationProtocols, SynthesisMethodsAbIsBipolar) {
     ASSERT_EQ(t.stimuli.size(), 3u);
     EXPECT_EQ(t.stimuli[2], t.reference);
     EXPECT_EQ(t.reference.substr(4), t.stimuli[0].substr(4));
+  }
+}
+
+// The two methods are the thesis's: sin-* is Eq 2.1 as written (cosine onset, unit impulse, the exact
+// oscillator bank, d = 2 pi f D), bpf-* the Pd [bp~] bank with the material's Q of Table 4.1; both
+// from the same 10 modes of the object, struck at the same area.
+TEST(ReplicationProtocols, SynthesisMethodsAreTheThesisMethods) {
+  const ms::Protocol p = load("ab_synthesis_methods");
+  const std::map<std::string, double> table_4_1_q = {{"plastic", 1000}, {"wood", 1500}, {"ceramic", 3000},
+                                                     {"glass", 3500}, {"metal", 4000}};
+  const std::string dir = std::string(MODALSTUDY_SOURCE_DIR) + "/protocols/";
+  // The stimulus as the protocol renders it, or (unpruned) without its `prune:`.
+  const auto resolved = [&](const std::string& name, bool unpruned = false) {
+    const ms::StimulusSource* s = p.find_stimulus(name);
+    if (!s) throw std::runtime_error("no stimulus " + name);
+    std::vector<std::string> overrides;
+    for (const std::string& o : s->overrides)
+      if (!unpruned || o.rfind("prune.", 0) != 0) overrides.push_back(o);
+    return ms::load_paramset(dir + s->path, overrides);
+  };
+  const auto& ab = std::get<ms::AbBlock>(block(p, "methods").body);
+  for (const auto& pr : ab.pairs) {
+    const ms::ParamSet sin = resolved(pr[0].name), bpf = resolved(pr[1].name);
+    const std::string material = pr[0].name.substr(4, pr[0].name.find('-', 4) - 4);
+    ASSERT_EQ(table_4_1_q.count(material), 1u) << pr[0].name;
+    EXPECT_EQ(sin.renderer, ms::Renderer::resonator) << pr[0].name;
+    EXPECT_EQ(bpf.renderer, ms::Renderer::bandpass) << pr[1].name;
+    EXPECT_EQ(bpf.bandpass_q, std::vector<double>{table_4_1_q.at(material)}) << pr[1].name;
+    EXPECT_EQ(bpf.bandpass_clip, 1.0) << pr[1].name;  // [clip~ -1 1]
+    // The 10 strongest modes, or all of them: the bars have fewer below Nyquist (board 6, bottle 9).
+    const std::size_t modes = std::min<std::size_t>(10, resolved(pr[0].name, true).model.modes.size());
+    for (const ms::ParamSet* set : {&sin, &bpf}) {
+      EXPECT_EQ(set->excitation.shape, ms::PulseShape::impulse);
+      EXPECT_EQ(set->excitation.gain, 1.0);
+      EXPECT_EQ(set->model.modes.size(), modes) << pr[0].name;
+    }
+    ASSERT_EQ(sin.model.modes.size(), bpf.model.modes.size());
+    const double loss_factor = sin.model.modes[0].decay_per_s / (2 * std::numbers::pi * sin.model.modes[0].freq_hz);
+    for (std::size_t i = 0; i < sin.model.modes.size(); ++i) {
+      const ms::Mode& m = sin.model.modes[i];
+      // sin(x + pi/2) = cos x (+ pi where the mode shape is negative at the hit)
+      EXPECT_NEAR(std::fmod(m.phase_rad, std::numbers::pi), 0.5 * std::numbers::pi, 1e-12) << pr[0].name;
+      EXPECT_NEAR(m.decay_per_s / (2 * std::numbers::pi * m.freq_hz), loss_factor, 1e-12) << pr[0].name;
+      // The same modes: the sets' f = f0 sqrt(1 - D^2) differ by at most 0.13% (plastic, D = 0.05).
+      EXPECT_NEAR(bpf.model.modes[i].freq_hz / m.freq_hz, 1.0, 1.3e-3) << pr[1].name;
+      EXPECT_DOUBLE_EQ(bpf.model.modes[i].amp, m.amp) << pr[1].name;
+    }
   }
 }
 
