@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <mutex>
 #include <fstream>
 
 #include "studyapp/core/sqlite_handle.hpp"
@@ -121,8 +122,11 @@ void fsync_folder(const std::string& dir) {
 // file beside it and linked into place only when complete, so a kill or a full disk at any moment
 // leaves either no file or a whole one. An empty file at `path` (what such an interrupted creation
 // left before) counts as missing. Another process creating the same file at the same time wins or
-// loses the link; both then open the one file.
+// loses the link; both then open the one file. Threads of one process take turns, since the temporary
+// file is named by the process (so that one left by a killed process can be told and removed).
 void create_atomically(const std::string& path) {
+  static std::mutex creating;
+  const std::lock_guard lock(creating);
   std::error_code ec;
   if (fs::exists(path, ec)) {
     if (!fs::is_regular_file(path, ec) || fs::file_size(path, ec) != 0) return;
@@ -174,7 +178,7 @@ void check_intact(const std::string& path, bool thorough) {
   std::string report;
   try {
     sqlite::Database db(path, SQLITE_OPEN_READONLY);
-    db.exec("PRAGMA query_only=1");
+    db.exec("PRAGMA busy_timeout=5000; PRAGMA query_only=1");  // another connection may be opening it
     sqlite::Statement q(db, thorough ? "PRAGMA integrity_check" : "PRAGMA quick_check");
     while (q.step()) report += (report.empty() ? "" : "; ") + q.column_text(0);
   } catch (const sqlite::Error& e) {

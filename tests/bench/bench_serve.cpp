@@ -179,7 +179,9 @@ void participant(unsigned short port, const std::string& token, Tally& tally) {
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
       }
     };
-    nlohmann::json page = nlohmann::json::parse(call(http::verb::get, "trial").second)["page"];
+    const auto [first_status, first_body] = call(http::verb::get, "trial");
+    if (first_status != 200) throw std::runtime_error("first trial refused (" + std::to_string(first_status) + "): " + first_body);
+    nlohmann::json page = nlohmann::json::parse(first_body).at("page");
     while (!page.value("finished", false) && !tally.give_up) {
       for (const auto& s : page["sounds"]) {
         call(http::verb::get, "sound/" + s["id"].get<std::string>());
@@ -198,7 +200,7 @@ void participant(unsigned short port, const std::string& token, Tally& tally) {
         const std::lock_guard<std::mutex> lock(tally.mutex);
         tally.answer_ms.push_back(ms);
       }
-      page = nlohmann::json::parse(body)["page"];
+      page = nlohmann::json::parse(body).at("page");
     }
   } catch (const std::exception& e) {
     const std::lock_guard<std::mutex> lock(tally.mutex);

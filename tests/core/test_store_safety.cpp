@@ -10,10 +10,13 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
+#include <vector>
 
 #include "core_fixtures.hpp"
 #include "studyapp/core/autopilot.hpp"
@@ -104,6 +107,33 @@ TEST(StoreSafety, AnEmptyFileLeftByAnInterruptedCreationIsTreatedAsNew) {
   ResultsStore store(path);
   EXPECT_EQ(store.integrity_check(), "ok");
   EXPECT_EQ(store.schema_version(), ResultsStore::kSchemaVersion);
+}
+
+// A server opening many participants' sessions at once into a store not yet created: every thread
+// gets the one database (they once shared a temporary file, named by the process id).
+TEST(StoreSafety, ThreadsCreatingOneStoreAtOnceAllOpenIt) {
+  for (int round = 0; round < 10; ++round) {
+    test::TempDir dir;
+    const std::string path = dir.file("r.sqlite");
+    constexpr int kThreads = 24;
+    std::atomic<int> ready{0}, opened{0};
+    std::vector<std::string> failures(kThreads);
+    std::vector<std::thread> threads;
+    for (int t = 0; t < kThreads; ++t)
+      threads.emplace_back([&, t] {
+        ++ready;
+        while (ready < kThreads) std::this_thread::yield();
+        try {
+          ResultsStore store(path);
+          ++opened;
+        } catch (const std::exception& e) {
+          failures[std::size_t(t)] = e.what();
+        }
+      });
+    for (std::thread& t : threads) t.join();
+    for (const std::string& f : failures) EXPECT_EQ(f, "");
+    ASSERT_EQ(opened, kThreads) << "round " << round;
+  }
 }
 
 TEST(StoreSafety, AFullDiskAtCreationLeavesNoFileAndTheNextRunCreatesIt) {
