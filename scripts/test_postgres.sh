@@ -49,7 +49,7 @@ start_test_postgres() {
     { cat "$TEST_PG_DIR/initdb.log"; return 1; }
   # fsync stays on: the tests check that a committed answer survives a killed connection.
   pg_run_as "$bin/pg_ctl" -D "$TEST_PG_DIR/data" -l "$TEST_PG_DIR/server.log" -w -t 30 \
-    -o "-c listen_addresses=127.0.0.1 -c port=$TEST_PG_PORT -c unix_socket_directories=$TEST_PG_DIR -c max_connections=200" \
+    -o "-c listen_addresses=127.0.0.1 -c port=$TEST_PG_PORT -c unix_socket_directories=$TEST_PG_DIR -c max_connections=300" \
     start >/dev/null || { cat "$TEST_PG_DIR/server.log"; return 1; }
   "$bin/pg_isready" -h 127.0.0.1 -p "$TEST_PG_PORT" -t 30 >/dev/null
   "$bin/createdb" -h 127.0.0.1 -p "$TEST_PG_PORT" -U modalstudy modalstudy_test

@@ -3,12 +3,10 @@
 
 #include <algorithm>
 #include <chrono>
-#include <condition_variable>
-#include <mutex>
 #include <set>
 #include <stdexcept>
-#include <thread>
 
+#include "studyapp/core/lease_keeper.hpp"
 #include "studyapp/core/participant_id.hpp"
 #include "studyapp/core/response_format.hpp"
 #include "synthesis/input_error.hpp"
@@ -45,43 +43,6 @@ std::int64_t unix_now_ms() {
       .count();
 }
 
-// Renews the session's lease every kHeartbeatMs on a connection of its own, so an idle participant
-// (reading instructions, on a break) keeps the session. Stops when destroyed.
-class Session::Heartbeat {
- public:
-  Heartbeat(const std::string& db_path, std::int64_t session)
-      : thread_([this, db_path, session] { run(db_path, session); }) {}
-  ~Heartbeat() {
-    {
-      std::lock_guard lock(mutex_);
-      stop_ = true;
-    }
-    wake_.notify_all();
-    thread_.join();
-  }
-
- private:
-  void run(const std::string& db_path, std::int64_t session) {
-    std::unique_lock lock(mutex_);
-    std::unique_ptr<ResultsStore> store;
-    while (!wake_.wait_for(lock, std::chrono::milliseconds(kHeartbeatMs), [this] { return stop_; })) {
-      try {
-        if (!store) store = std::make_unique<ResultsStore>(db_path, ResultsStore::Mode::open_existing);
-        store->renew_lease(session, this_process(), unix_now_ms());
-      } catch (const std::exception&) {
-        // A busy or lost lease is found by the next write of the session itself, which refuses it; a
-        // lost connection (a restarted server) is opened anew at the next beat.
-        store.reset();
-      }
-    }
-  }
-
-  std::mutex mutex_;
-  std::condition_variable wake_;
-  bool stop_ = false;
-  std::thread thread_;
-};
-
 Session::Session(const Protocol& protocol, const std::string& protocol_text, const std::string& participant,
                  const std::string& db_path, const std::map<std::string, std::string>& stimulus_hashes,
                  std::int64_t now_ms, const SessionStart& start)
@@ -105,7 +66,8 @@ Session::Session(const Protocol& protocol, const std::string& protocol_text, con
       {protocol.study, protocol.title, sha256_hex(protocol_text), protocol_text, protocol.export_personal}, request);
   session_ = opened.session;
   resumed_ = opened.resumed;
-  heartbeat_ = std::make_unique<Heartbeat>(db_path, session_);
+  lease_keeper_ = LeaseKeeper::of(db_path);
+  lease_keeper_->keep(session_);
   // The first trial, in schedule order, without a stored answer.
   std::set<std::pair<int, int>> done;
   for (const auto& p : store_->answered_trials(session_)) done.insert({p.block_index, p.trial_index});
@@ -132,7 +94,7 @@ Session::Session(const Protocol& protocol, const std::string& protocol_text, con
 }
 
 Session::~Session() {
-  heartbeat_.reset();
+  lease_keeper_->drop(session_);
   try {
     store_->release_lease(session_, this_process());
   } catch (const std::exception&) {  // a lease left behind is stale once this process is gone

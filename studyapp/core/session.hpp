@@ -4,7 +4,7 @@
 // Staircase trials run their track inside the trial: core draws which interval holds the comparison
 // and scores the listener's choice; each step is committed as a "step" event, so a track interrupted
 // by a crash continues where it stopped, with the same draws. While a Session object lives it holds the
-// session's lease (a heartbeat thread renews it), so no other process can answer for the participant.
+// session's lease (the process's LeaseKeeper renews it), so no other process can answer for the participant.
 #pragma once
 #include <cstdint>
 #include <map>
@@ -21,6 +21,8 @@
 #include "studyapp/core/staircase_track.hpp"
 
 namespace ms {
+
+class LeaseKeeper;
 
 struct SessionStart {
   bool new_session = false;  // run a participant who finished the study once more (a new session)
@@ -83,7 +85,6 @@ class Session {
 
  private:
   void advance();
-  class Heartbeat;
 
   const Protocol& protocol_;
   std::string participant_;
@@ -98,7 +99,7 @@ class Session {
   int track_plays_ = 0;
   double track_rt_ms_ = 0.0;
   std::vector<std::string> warnings_;
-  std::unique_ptr<Heartbeat> heartbeat_;
+  std::shared_ptr<LeaseKeeper> lease_keeper_;  // renews the lease while the session is open
 };
 
 // Milliseconds since the Unix epoch (system clock).
