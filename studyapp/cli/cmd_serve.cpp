@@ -7,6 +7,7 @@
 #include <mutex>
 
 #include "studyapp/cli/commands.hpp"
+#include "studyapp/core/store_location.hpp"
 #include "studyapp/web/study_server.hpp"
 
 namespace ms::cli {
@@ -30,8 +31,12 @@ void register_serve(CLI::App& app) {
   auto* list = cmd->add_option("--participant-list", opt->serve.participant_list,
                                "CSV participant,token of the links to accept (tokens: 32-128 hex digits)");
   n->excludes(list);
-  cmd->add_option("--links", opt->serve.links_path, "Where issued links are kept (default <db>.links.csv, mode 0600)");
-  cmd->add_option("--cache", opt->serve.cache_dir, "Rendered-stimulus cache folder (default <db dir>/stimulus-cache)");
+  cmd->add_option("--links", opt->serve.links_path,
+                  "Where issued links are kept (default <db>.links.csv; for a PostgreSQL store "
+                  "<protocol dir>/results/<study>.sqlite.links.csv; mode 0600)");
+  cmd->add_option("--cache", opt->serve.cache_dir,
+                  "Rendered-stimulus cache folder (default <db dir>/stimulus-cache; for a PostgreSQL store "
+                  "<protocol dir>/results/stimulus-cache)");
   cmd->add_option("--client", opt->serve.client_dir, "Browser client folder (default the data folder's web/)");
   cmd->add_option("--base-url", opt->base_url, "Public address printed in the links (e.g. https://study.example.org)");
   cmd->add_option("--body-limit", opt->serve.http.body_limit_bytes, "Largest request body in bytes (default 65536)");
@@ -54,7 +59,7 @@ void register_serve(CLI::App& app) {
     const std::string base = opt->base_url.empty()
                                  ? "http://" + opt->serve.http.host + ":" + std::to_string(server.port())
                                  : opt->base_url;
-    std::cout << "serving " << opt->serve.protocol_path << " into " << server.db_path() << " at http://"
+    std::cout << "serving " << opt->serve.protocol_path << " into " << location_without_password(server.db_path()) << " at http://"
               << opt->serve.http.host << ":" << server.port() << "\n";
     if (!server.links_path().empty()) std::cout << "links kept in " << server.links_path() << "\n";
     std::cout << "experimenter " << server.experimenter_url(base) << "\n";

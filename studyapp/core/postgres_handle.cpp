@@ -3,6 +3,7 @@
 
 #include <libpq-fe.h>
 
+#include "studyapp/core/store_location.hpp"
 #include "synthesis/input_error.hpp"
 
 namespace ms::pg {
@@ -25,20 +26,6 @@ std::string one_line(std::string text) {
   return out;
 }
 
-// The URI with the password of its authority part (user:PASSWORD@host) cut out, for a URI libpq cannot
-// parse (so no parsed parts to rebuild it from).
-std::string without_password(const std::string& uri) {
-  const auto scheme = uri.find("://");
-  if (scheme == std::string::npos) return uri;
-  const auto start = scheme + 3;
-  const auto end = std::min(uri.find('/', start), uri.size());
-  const auto at = uri.rfind('@', end == 0 ? 0 : end - 1);
-  if (at == std::string::npos || at < start) return uri;
-  const auto colon = uri.find(':', start);
-  if (colon == std::string::npos || colon > at) return uri;
-  return uri.substr(0, colon) + uri.substr(at);
-}
-
 void ignore_notice(void*, const char*) {}  // NOTICEs (e.g. from DDL) are not the user's business
 
 }  // namespace
@@ -53,7 +40,7 @@ std::string display_uri(const std::string& uri) {
   if (!opts) {
     std::string why = err ? one_line(err) : "out of memory";
     PQfreemem(err);
-    throw InputError(SourceLocation{without_password(uri), 0, 0},
+    throw InputError(SourceLocation{location_without_password(uri), 0, 0},
                      "not a valid PostgreSQL URI (" + why + "); expected postgresql://user@host:port/dbname");
   }
   std::string user, host, port, dbname;

@@ -9,6 +9,7 @@
 #include "studyapp/core/autopilot.hpp"
 #include "studyapp/core/protocol_validator.hpp"
 #include "studyapp/core/stimulus_cache.hpp"
+#include "studyapp/core/store_location.hpp"
 #include "studyapp/web/client_files.hpp"
 #include "studyapp/web/experimenter_view.hpp"
 #include "studyapp/web/rate_limit.hpp"
@@ -63,11 +64,15 @@ StudyServer::StudyServer(const ServeOptions& o, Logger log) : impl_(std::make_un
   if (!m.check.problems.empty() || !m.check.protocol) throw InvalidProtocol(m.check.problems);
   const Protocol& protocol = *m.check.protocol;
   m.db_path = o.db_path.empty() ? default_db_path(o.protocol_path, protocol.study) : o.db_path;
-  const fs::path db_dir = fs::path(m.db_path).parent_path();
+  // The links and the stimulus cache are local files: beside a SQLite store, and where a SQLite store
+  // would be (the protocol's results/ folder) when the store is a PostgreSQL server.
+  const std::string local_store =
+      is_postgres_uri(m.db_path) ? default_db_path(o.protocol_path, protocol.study) : m.db_path;
+  const fs::path db_dir = fs::path(local_store).parent_path();
   if (!db_dir.empty()) fs::create_directories(db_dir);
   const std::string cache_dir = o.cache_dir.empty() ? (db_dir / "stimulus-cache").string() : o.cache_dir;
   if (o.participant_list.empty()) {
-    m.links_path = o.links_path.empty() ? m.db_path + ".links.csv" : o.links_path;
+    m.links_path = o.links_path.empty() ? local_store + ".links.csv" : o.links_path;
     m.links = issued_links(m.links_path, o.participants);
   } else {
     m.links = read_participant_list(o.participant_list);

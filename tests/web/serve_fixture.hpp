@@ -44,7 +44,7 @@ class ServeTest : public ::testing::Test {
   void start() {
     web::ServeOptions o;
     o.protocol_path = protocol_;
-    o.db_path = dir_.file("results.sqlite");
+    o.db_path = db_;
     o.participants = 2;
     o.http.port = 0;
     o.http.threads = 1;
@@ -87,12 +87,13 @@ class ServeTest : public ::testing::Test {
   }
 
   std::int64_t stored(const std::string& table) const {
-    return ResultsStore(dir_.file("results.sqlite"), ResultsStore::Mode::read_only).count(table);
+    return ResultsStore(db_, ResultsStore::Mode::read_only).count(table);
   }
 
   double rate_burst_ = 300, rate_per_second_ = 100;
   TempDir dir_;
   std::string protocol_ = write_web_study(dir_);
+  std::string db_ = dir_.file("results.sqlite");  // a file, or a PostgreSQL URI set before SetUp
   std::unique_ptr<web::StudyServer> server_;
   std::thread thread_;
 };
