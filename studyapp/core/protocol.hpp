@@ -127,6 +127,9 @@ struct Block {
   SourceLocation id_where;
   bool randomize = true;
   bool training = false;
+  // Blocks next to each other with the same shuffle group run in an order drawn per participant.
+  std::string shuffle;         // "" = in the written place
+  SourceLocation shuffle_where;
   int break_after = 0;         // trials between breaks; 0 = none
   int repeats = 1;
   bool listen_all = true;      // every sound must be played (MUSHRA: every slider moved) before answering

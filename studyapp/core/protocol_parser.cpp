@@ -134,12 +134,12 @@ YAML::Node required(const YamlReader& r, const YAML::Node& n, const std::string&
 }
 
 InstructionsBlock parse_instructions(const YamlReader& r, const YAML::Node& n, const std::string& p, const Block& b) {
-  r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "text"});
+  r.check_keys(n, p, {"type", "id", "randomize", "training", "shuffle", "break_after", "text"});
   return InstructionsBlock{r.text(required(r, n, p, b, "text"), p + ".text")};
 }
 
 AbBlock parse_ab(const YamlReader& r, const YAML::Node& n, const std::string& p) {
-  r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "listen_all", "prompt", "feedback", "mode", "pairs"});
+  r.check_keys(n, p, {"type", "id", "randomize", "training", "shuffle", "break_after", "repeats", "listen_all", "prompt", "feedback", "mode", "pairs"});
   AbBlock ab;
   if (n["mode"]) {
     const std::string m = r.text(n["mode"], p + ".mode");
@@ -173,7 +173,7 @@ AbBlock parse_ab(const YamlReader& r, const YAML::Node& n, const std::string& p)
 }
 
 MushraBlock parse_mushra(const YamlReader& r, const YAML::Node& n, const std::string& p) {
-  r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "listen_all", "reference",
+  r.check_keys(n, p, {"type", "id", "randomize", "training", "shuffle", "break_after", "repeats", "listen_all", "reference",
                       "conditions", "anchors", "prompt", "feedback"});
   MushraBlock m;
   if (n["reference"]) m.reference = ref(r, n["reference"], p + ".reference");
@@ -186,7 +186,7 @@ MushraBlock parse_mushra(const YamlReader& r, const YAML::Node& n, const std::st
 }
 
 MagnitudeBlock parse_magnitude(const YamlReader& r, const YAML::Node& n, const std::string& p, const Block& b) {
-  r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "modulus", "pairs",
+  r.check_keys(n, p, {"type", "id", "randomize", "training", "shuffle", "break_after", "repeats", "modulus", "pairs",
                       "stimuli", "listen_all", "prompt", "feedback", "modulus_value"});
   MagnitudeBlock g;
   g.modulus = pair(r, required(r, n, p, b, "modulus"), p + ".modulus");
@@ -204,13 +204,13 @@ MagnitudeBlock parse_magnitude(const YamlReader& r, const YAML::Node& n, const s
 }
 
 IdentifyBlock parse_identify(const YamlReader& r, const YAML::Node& n, const std::string& p) {
-  r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "stimuli", "labels",
+  r.check_keys(n, p, {"type", "id", "randomize", "training", "shuffle", "break_after", "repeats", "stimuli", "labels",
                       "listen_all", "prompt", "feedback"});
   return IdentifyBlock{refs(r, n["stimuli"], p + ".stimuli"), texts(r, n["labels"], p + ".labels")};
 }
 
 RatingBlock parse_rating(const YamlReader& r, const YAML::Node& n, const std::string& p, const Block& b) {
-  r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "listen_all", "stimuli",
+  r.check_keys(n, p, {"type", "id", "randomize", "training", "shuffle", "break_after", "repeats", "listen_all", "stimuli",
                       "attributes", "prompt", "feedback"});
   RatingBlock rb;
   rb.stimuli = refs(r, n["stimuli"], p + ".stimuli");
@@ -230,7 +230,7 @@ RatingBlock parse_rating(const YamlReader& r, const YAML::Node& n, const std::st
 }
 
 AdjustBlock parse_adjust(const YamlReader& r, const YAML::Node& n, const std::string& p, const Block& b) {
-  r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "paramset", "sliders",
+  r.check_keys(n, p, {"type", "id", "randomize", "training", "shuffle", "break_after", "repeats", "paramset", "sliders",
                       "target", "listen_all", "prompt", "feedback"});
   AdjustBlock ad;
   ad.paramset = ref(r, required(r, n, p, b, "paramset"), p + ".paramset");
@@ -255,7 +255,7 @@ AdjustBlock parse_adjust(const YamlReader& r, const YAML::Node& n, const std::st
 }
 
 StaircaseBlock parse_staircase(const YamlReader& r, const YAML::Node& n, const std::string& p, const Block& b) {
-  r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "repeats", "stimulus",
+  r.check_keys(n, p, {"type", "id", "randomize", "training", "shuffle", "break_after", "repeats", "stimulus",
                       "reference", "parameter", "start", "step", "down_up", "reversals",
                       "listen_all", "prompt", "feedback"});
   StaircaseBlock s;
@@ -276,7 +276,7 @@ StaircaseBlock parse_staircase(const YamlReader& r, const YAML::Node& n, const s
 }
 
 QuestionnaireBlock parse_questionnaire(const YamlReader& r, const YAML::Node& n, const std::string& p) {
-  r.check_keys(n, p, {"type", "id", "randomize", "training", "break_after", "questions", "prompt"});
+  r.check_keys(n, p, {"type", "id", "randomize", "training", "shuffle", "break_after", "questions", "prompt"});
   QuestionnaireBlock q;
   const YAML::Node qs = n["questions"];
   if (qs && !qs.IsSequence()) r.fail(qs, p + ".questions", "expected a list of questions");
@@ -332,6 +332,10 @@ Block parse_block(const YamlReader& r, const YAML::Node& n, std::size_t index) {
   }
   if (n["randomize"]) b.randomize = flag(r, n["randomize"], p + ".randomize");
   if (n["training"]) b.training = flag(r, n["training"], p + ".training");
+  if (n["shuffle"]) {
+    b.shuffle = r.text(n["shuffle"], p + ".shuffle");
+    b.shuffle_where = r.where(n["shuffle"], p + ".shuffle");
+  }
   if (n["break_after"]) b.break_after = count(r, n["break_after"], p + ".break_after", 0, 100000);
   if (n["listen_all"]) b.listen_all = flag(r, n["listen_all"], p + ".listen_all");
   if (n["prompt"]) b.prompt = r.text(n["prompt"], p + ".prompt");

@@ -184,6 +184,27 @@ struct Checker {
     for (const auto& r : b.referenced()) ref(r, who);
     block_contents(b, who);
   }
+
+  // A shuffle group is one run of neighbouring blocks; it cannot be combined with a Latin square,
+  // which already chooses the test blocks' order.
+  void shuffle_groups() {
+    std::map<std::string, std::size_t> last;  // group -> index of its latest block
+    for (std::size_t i = 0; i < p.blocks.size(); ++i) {
+      const Block& b = p.blocks[i];
+      if (b.shuffle.empty()) continue;
+      if (p.counterbalance == Counterbalance::latin_square) {
+        problems.push_back(at(b.shuffle_where, "block '" + b.id + "': shuffle groups and counterbalance: "
+                                               "latin_square both order blocks; use one of them"));
+        return;
+      }
+      const auto seen = last.find(b.shuffle);
+      if (seen != last.end() && seen->second + 1 != i)
+        problems.push_back(at(b.shuffle_where, "block '" + b.id + "': shuffle group '" + b.shuffle +
+                                               "' must be one run of neighbouring blocks (it was interrupted after "
+                                               "block '" + p.blocks[seen->second].id + "')"));
+      last[b.shuffle] = i;
+    }
+  }
 };
 
 }  // namespace
@@ -193,6 +214,7 @@ std::vector<std::string> validate_protocol(const Protocol& p, const ValidateOpti
   for (const auto& s : p.stimuli) check.stimulus(s);
   std::map<std::string, const Block*> ids;
   for (const auto& b : p.blocks) check.block(b, ids);
+  check.shuffle_groups();
   if (p.blocks.empty() && p.unparsed_blocks == 0) check.problems.push_back(at({p.file, 1, 1}, "the protocol has no blocks"));
   return std::move(check.problems);
 }

@@ -134,6 +134,28 @@ std::vector<Trial> block_trials(const Block& b, std::size_t block_index, std::mt
 
 }  // namespace
 
+namespace {
+
+// Each run of neighbouring blocks sharing a shuffle group takes an order of its own, drawn from a
+// stream of its own (a protocol without groups keeps every draw it had).
+void shuffle_groups(const Protocol& p, std::uint64_t seed, std::vector<std::size_t>& order) {
+  std::mt19937_64 rng(seed ^ 0x53485546464c45ull);  // "SHUFFLE"
+  for (std::size_t start = 0; start < order.size();) {
+    const std::string& group = p.blocks[order[start]].shuffle;
+    std::size_t end = start + 1;
+    while (end < order.size() && !group.empty() && p.blocks[order[end]].shuffle == group) ++end;
+    if (end - start > 1) {
+      std::vector<std::size_t> run(order.begin() + static_cast<std::ptrdiff_t>(start),
+                                   order.begin() + static_cast<std::ptrdiff_t>(end));
+      fisher_yates(run, rng);  // the project's own draw: the same order with every standard library
+      std::copy(run.begin(), run.end(), order.begin() + static_cast<std::ptrdiff_t>(start));
+    }
+    start = end;
+  }
+}
+
+}  // namespace
+
 Schedule make_schedule(const Protocol& p, const std::string& participant) {
   Schedule s;
   s.participant = participant;
@@ -153,6 +175,7 @@ Schedule make_schedule(const Protocol& p, const std::string& participant) {
       for (std::size_t k = 0; k < slots.size(); ++k) s.block_order[slots[k]] = slots[row[k]];
     }
   }
+  shuffle_groups(p, s.seed, s.block_order);
   for (std::size_t bi : s.block_order) {
     if (p.blocks[bi].type == BlockType::unknown) continue;
     auto t = block_trials(p.blocks[bi], bi, rng);

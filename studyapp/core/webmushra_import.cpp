@@ -164,15 +164,26 @@ class Importer {
   void pages(const YAML::Node& list, const std::string& path, int depth = 0) {
     if (!list.IsSequence()) r_.fail(list, path, "expected a list of pages");
     if (depth > 8) r_.fail(list, path, "page lists nested more than 8 deep");
-    for (std::size_t i = 0; i < list.size(); ++i) {
+    const bool random = list.size() > 0 && list[0].IsScalar() && list[0].Scalar() == "random";
+    const std::size_t first_block = blocks_.size();
+    bool one_block_per_page = true;
+    for (std::size_t i = random ? 1 : 0; i < list.size(); ++i) {
       const std::string p = path + "[" + std::to_string(i) + "]";
       const YAML::Node item = list[i];
-      if (item.IsScalar() && item.Scalar() == "random" && i == 0)
-        note(item, p, "random page order not carried over: these pages run in the written order (trials are "
-                      "randomised within each block)");
-      else if (item.IsSequence()) pages(item, p, depth + 1);
+      const std::size_t before = blocks_.size();
+      if (item.IsSequence()) pages(item, p, depth + 1);
       else if (item.IsMap()) page(item, p);
       else r_.fail(item, p, "expected a page (a map with 'type'), a list of pages, or \"random\" first in a list");
+      one_block_per_page = one_block_per_page && item.IsMap() && blocks_.size() == before + 1;
+    }
+    if (!random) return;
+    // webMUSHRA draws the order of a random group's pages per participant; so does a shuffle group.
+    if (one_block_per_page) {
+      const std::string group = "random-" + std::to_string(++random_groups_);
+      for (std::size_t k = first_block; k < blocks_.size(); ++k) blocks_[k]["shuffle"] = group;
+    } else {
+      note(list[0], path + "[0]", "random page order not carried over: a page of this group is a nested list or "
+                                  "not one block, so these pages run in the written order");
     }
   }
 
@@ -435,6 +446,7 @@ class Importer {
   std::string protocol_path_;
   fs::path config_dir_, root_, protocol_dir_;
   YAML::Node out_, stimuli_{YAML::NodeType::Map}, blocks_{YAML::NodeType::Sequence};
+  int random_groups_ = 0;
   std::map<std::string, fs::path> files_;  // stimulus name -> the file it plays
   std::map<fs::path, double> rates_hz_;    // file -> its sample rate
   std::set<std::string> block_ids_;

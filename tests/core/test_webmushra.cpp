@@ -114,8 +114,29 @@ TEST(WebMushraImport, PagesBecomeBlocksOfAProtocolThatValidates) {
   EXPECT_EQ(q.questions[1].options, (std::vector<std::string>{"closed", "open"}));
   // Files are written relative to the protocol; the same file under one name is one stimulus.
   EXPECT_EQ(p.find_stimulus("C1")->path, "configs/audio/c1.wav");
-  EXPECT_TRUE(has_note(w, "random page order"));
+  EXPECT_EQ(p.blocks[3].shuffle, "random-1");  // the random group's one page
+  EXPECT_FALSE(has_note(w, "random page order"));
   EXPECT_TRUE(has_note(w, "inner labels"));
+}
+
+TEST(WebMushraImport, ARandomGroupIsAShuffleGroupUnlessAPageIsNotOneBlock) {
+  WebMushraRoot root;
+  std::string second = kMushra;
+  second.replace(second.find("id: m1"), 6, "id: m2");
+  const WebMushraImport w = root.import("  - {type: generic, id: hello, name: Hi, content: Hi.}\n"
+                                        "  -\n    - random\n" + indented(kMushra, 2) + indented(second, 2));
+  const Protocol p = parse_protocol(w.protocol_yaml, root.dir.file("study.yaml"), root.dir.path().string());
+  ASSERT_EQ(p.blocks.size(), 3u);
+  EXPECT_EQ(p.blocks[0].shuffle, "");
+  EXPECT_EQ(p.blocks[1].shuffle, "random-1");
+  EXPECT_EQ(p.blocks[2].shuffle, "random-1");
+  EXPECT_FALSE(has_note(w, "random page order"));
+  // A nested list inside the group: its pages keep their written order, said in one note.
+  const WebMushraImport nested = root.import("  -\n    - random\n" + indented(kMushra, 2) + "    -\n" +
+                                             indented(second, 4));
+  EXPECT_TRUE(has_note(nested, "random page order not carried over"));
+  const Protocol q = parse_protocol(nested.protocol_yaml, root.dir.file("study.yaml"), root.dir.path().string());
+  for (const Block& b : q.blocks) EXPECT_EQ(b.shuffle, "");
 }
 
 TEST(WebMushraImport, OneAnchorIsTheLowPassedReferenceAndNoneIsNone) {
