@@ -39,4 +39,12 @@ ModalModel candidate_model(const ObjectEigen& object, const Candidate& c, double
 std::vector<float> render_candidate(const ModalModel& model, const Excitation& excitation, double sample_rate_hz,
                                     std::size_t frames);
 
+// The same sound with every mode rendered only while its envelope can exceed floor_amp (a mode never
+// above it is left out): after the contact a mode's amplitude is at most |amp gain| e^{-d (t - tau)}
+// (the contact's force has area 1 and is non-negative), so each sample differs from
+// render_candidate's by less than floor_amp per mode left out or cut. The modes are rendered in a few
+// banks of increasing length, the shortest that holds each mode's end. floor_amp 0: render_candidate.
+std::vector<float> render_candidate_above(const ModalModel& model, const Excitation& excitation, double sample_rate_hz,
+                                          std::size_t frames, double floor_amp);
+
 }  // namespace ms

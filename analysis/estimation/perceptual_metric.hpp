@@ -50,6 +50,12 @@ class PerceptualReference {
 
   // The other sound (same sample rate, from its onset) and its modes.
   PerceptualScores compare(const std::vector<float>& samples, const std::vector<Mode>& modes) const;
+  // The same with white noise of standard deviation noise_sigma heard under the other sound, taken by
+  // its expected power: each band's mean square gains noise_sigma^2 2 n_b / N (n_b the rfft bins of
+  // band b, N the window), the cross terms averaging to 0. Unlike one seeded draw of noise, no
+  // particular noise waveform is matched against the recording's own.
+  PerceptualScores compare(const std::vector<float>& samples, const std::vector<Mode>& modes,
+                           double noise_sigma) const;
   // Pi_psycho alone.
   double psycho(const std::vector<float>& samples) const;
   // The other sound's loudness image at the reference's calibration.

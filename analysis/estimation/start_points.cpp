@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <numbers>
 #include <numeric>
 #include <stdexcept>
@@ -126,6 +127,25 @@ std::vector<StartPoint> start_points(const std::vector<Mode>& modes, const std::
       }
   }
   return starts;
+}
+
+double eigenvalue_alignment(const std::vector<Mode>& modes, const std::vector<double>& weights,
+                            const std::vector<double>& lambda0, double gamma, double rel_tol) {
+  if (weights.size() != modes.size()) throw std::invalid_argument("eigenvalue_alignment: one weight per mode");
+  std::vector<double> sorted(lambda0);
+  std::sort(sorted.begin(), sorted.end());
+  double lined = 0.0, total = 0.0;
+  for (std::size_t i = 0; i < modes.size(); ++i) {
+    if (!(weights[i] > 0.0)) continue;
+    total += weights[i];
+    const double target = eigenvalue_of(modes[i]) / gamma;  // the lambda0 this mode would be
+    const auto it = std::lower_bound(sorted.begin(), sorted.end(), target);
+    double nearest = HUGE_VAL;
+    if (it != sorted.end()) nearest = std::min(nearest, std::abs(*it / target - 1.0));
+    if (it != sorted.begin()) nearest = std::min(nearest, std::abs(*std::prev(it) / target - 1.0));
+    if (nearest <= rel_tol) lined += weights[i];
+  }
+  return total > 0.0 ? lined / total : 0.0;
 }
 
 }  // namespace ms

@@ -63,4 +63,12 @@ std::vector<StartPoint> start_points(const std::vector<Mode>& modes, const std::
                                      const std::vector<double>& lambda0, const std::vector<double>& excitation,
                                      std::size_t dominant = 5, StartEigenvalues onto = StartEigenvalues::pareto);
 
+// How well gamma lines the object's eigenvalues up with the recording's modes, whatever the damping:
+// the weighted share (weights: one per mode) of the modes whose eigenvalue (2 pi f)^2 + d^2 lies within
+// a relative rel_tol of some gamma lambda0_e. The true gamma lines up every mode the extractor found
+// cleanly, a wrong one only those a dense spectrum happens to hold, so that it tells the eigenvalue the
+// dominant mode belongs to where the dominant mode alone cannot. 0 when no mode weighs anything.
+double eigenvalue_alignment(const std::vector<Mode>& modes, const std::vector<double>& weights,
+                            const std::vector<double>& lambda0, double gamma, double rel_tol = 4e-3);
+
 }  // namespace ms

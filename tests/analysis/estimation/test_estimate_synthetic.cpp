@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <random>
 #include <string>
 
@@ -119,6 +120,44 @@ struct CaseResult {
 
 double rel(double estimate, double truth) { return estimate / truth - 1.0; }
 
+// Diagnosis (MODALSTUDY_ESTIMATE_VERBOSE set): the extracted modes with their weights and the truth's
+// mode each lies nearest to, every start with its circle, eigenvalue, metric before and after, and
+// the truth's own metric.
+void print_starts(const SyntheticCase& c, const ExtractedFeatures& f, const MaterialEstimate& e,
+                  const std::vector<float>& x, double fs, const ObjectEigen& object, const EstimateOptions& o) {
+  const ModalModel truth = candidate_model(object, c.truth, 0.5 * fs);
+  const std::size_t frames = std::min(x.size(), std::size_t(o.max_duration_s * fs));
+  const PerceptualReference ref(std::vector<float>(x.begin(), x.begin() + std::ptrdiff_t(frames)), fs, f.modes,
+                                o.perceptual);
+  for (std::size_t i = 0; i < f.modes.size(); ++i) {
+    const Mode& m = f.modes[i];
+    std::size_t near = 0;
+    for (std::size_t k = 0; k < truth.modes.size(); ++k)
+      if (std::abs(truth.modes[k].freq_hz - m.freq_hz) < std::abs(truth.modes[near].freq_hz - m.freq_hz)) near = k;
+    std::printf("   mode %2zu f %8.1f d %8.2f amp %9.3g w %9.3g | truth mode %3zu f %8.1f d %8.2f amp %9.3g\n", i,
+                m.freq_hz, m.decay_per_s, m.amp, ref.features()[i].weight, near, truth.modes[near].freq_hz,
+                truth.modes[near].decay_per_s, truth.modes[near].amp);
+  }
+  for (const StartResult& s : e.starts)
+    std::printf("   start modes %zu,%zu eig %3zu a %9.4g b %9.3g g %9.4g s %9.3g -> a %+7.1f%% b %+7.1f%% g %+7.2f%% "
+                "s %+7.1f%% tau %.3f ms hybrid %.5g (%zu evals)\n",
+                s.start.mode_a, s.start.mode_b, s.start.eigenvalue, s.initial.alpha, s.initial.beta, s.initial.gamma,
+                s.initial.sigma, 100 * rel(s.fitted.alpha, c.truth.alpha), 100 * rel(s.fitted.beta, c.truth.beta),
+                100 * rel(s.fitted.gamma, c.truth.gamma), 100 * rel(s.fitted.sigma, c.truth.sigma), s.contact_s * 1e3,
+                s.scores.hybrid, s.evaluations);
+  std::vector<double> weights;
+  for (const FeaturePoint& p : ref.features()) weights.push_back(p.weight);
+  const std::vector<StartPoint> all =
+      start_points(f.modes, weights, object.lambda0, object.gain, o.dominant_modes, o.start_eigenvalues);
+  std::size_t near_gamma = 0;
+  for (const StartPoint& s : all) near_gamma += std::abs(s.stiffness_ratio / c.truth.gamma - 1.0) < 0.05;
+  const PerceptualScores t = score_candidate(x, fs, f.modes, object, object.strike, c.truth, c.contact_s, o);
+  std::printf("   %zu start points, %zu with gamma within 5 %%; truth's metric %.5g = %.5g / %.4f (its contact), "
+              "estimate's %.5g = %.5g / %.4f\n",
+              all.size(), near_gamma, t.hybrid, t.psycho, -t.match.product, e.scores.hybrid, e.scores.psycho,
+              -e.scores.match.product);
+}
+
 CaseResult run_case(const SyntheticCase& c) {
   static const ObjectEigen bar = object_eigen_from_paramset(kBar), plate = object_eigen_from_paramset(kPlate);
   const ObjectEigen& object = c.plate ? plate : bar;
@@ -136,6 +175,7 @@ CaseResult run_case(const SyntheticCase& c) {
     EstimateOptions o;
     o.noise_sigma = f.noise_sigma;
     const MaterialEstimate e = estimate_material(x, fs, f.modes, object, object.strike, o);
+    if (std::getenv("MODALSTUDY_ESTIMATE_VERBOSE")) print_starts(c, f, e, x, fs, object, o);
     r.estimate = e.material;
     r.estimated_contact_s = e.contact_s;
   } catch (const std::invalid_argument& e) {
@@ -160,19 +200,30 @@ void print_row(const CaseResult& r) {
   if (!r.error.empty()) std::printf("       %s\n", r.error.c_str());
 }
 
-// The seeds: 1000-1006 were used to tune the estimator; the proof draws 2000-2049 (bar on even,
+// The seeds: 1000-1049 were used to tune the estimator; the proof draws 2000-2049 (bar on even,
 // plate on odd seeds), disjoint from them.
 constexpr std::uint64_t kFirstSeed = 2000;
 constexpr std::size_t kCases = 50;
 
-// Disabled: it does not pass yet (plates whose loudest mode is mapped onto the wrong eigenvalue miss
-// gamma by far; some bars miss beta). Run it with --gtest_also_run_disabled_tests; about 10 minutes.
-TEST(EstimateSynthetic, DISABLED_RecoversRandomMaterialsThroughNoiseAndAnUnknownContact) {
+// MODALSTUDY_ESTIMATE_SEEDS=FIRST-LAST runs those seeds instead (tuning runs on seeds disjoint from the proof's).
+std::pair<std::uint64_t, std::size_t> seed_range() {
+  if (const char* s = std::getenv("MODALSTUDY_ESTIMATE_SEEDS")) {
+    unsigned long long first = 0, last = 0;
+    if (std::sscanf(s, "%llu-%llu", &first, &last) == 2 && last >= first) return {first, std::size_t(last - first + 1)};
+  }
+  return {kFirstSeed, kCases};
+}
+
+// About 3 minutes (its own CTest entry). Measured: 46 of 50 pass; the four misses are three bars
+// with 2 to 5 heard modes (alpha -14 %, sigma -14 % with the contact read 0.64 ms for 0.78, beta
+// +11 %) and one metal plate (beta +10.5 %).
+TEST(EstimateSynthetic, RecoversRandomMaterialsThroughNoiseAndAnUnknownContact) {
   std::vector<CaseResult> results;
   std::size_t passed = 0;
   std::printf("  seed obj   near                         alpha      beta     gamma     sigma tau_ms est_ms |  alpha    beta    gamma    sigma  modes  time\n");
-  for (std::size_t i = 0; i < kCases; ++i) {
-    const std::uint64_t seed = kFirstSeed + i;
+  const auto [first_seed, cases] = seed_range();
+  for (std::size_t i = 0; i < cases; ++i) {
+    const std::uint64_t seed = first_seed + i;
     results.push_back(run_case(draw_case(seed, seed % 2 == 1)));
     print_row(results.back());
     std::fflush(stdout);
@@ -193,8 +244,9 @@ struct RenMaterialSeed {
 };
 class EstimateGeometryInvariance : public ::testing::TestWithParam<RenMaterialSeed> {};
 
-// Disabled until measured: run it with --gtest_also_run_disabled_tests.
-TEST_P(EstimateGeometryInvariance, DISABLED_BarAndPlateOfOneRenMaterialGiveTheSameEstimate) {
+// About 15 s per material. Porcelain's alpha (0.037 1/s, small beside beta lambda at every heard mode)
+// comes out 15 % and 20 % low on bar and plate, but the two agree within the tolerance.
+TEST_P(EstimateGeometryInvariance, BarAndPlateOfOneRenMaterialGiveTheSameEstimate) {
   const Material& m = *find_material(std::string("ren2013/") + GetParam().material);
   SyntheticCase c;
   c.near = m.id;

@@ -327,3 +327,22 @@ TEST(HybridMetric, IdenticalSoundsScoreZeroAndMismatchScoresHigher) {
   EXPECT_EQ(hybrid_metric(1.0, MatchRatios{}), std::numeric_limits<double>::infinity());
   EXPECT_EQ(hybrid_metric(2.0, MatchRatios{0.5, 0.5, -0.25}), 8.0);
 }
+
+TEST(HybridMetric, NoiseByItsExpectedPowerIsTheRecordingsNoiseOnAverage) {
+  // A recording of white noise alone: silence with the noise's expected power added lies closer to
+  // it than another draw of the same noise does, and far closer than silence.
+  const double sigma = 0.01;
+  std::mt19937_64 g(7);
+  std::normal_distribution<double> n(0.0, sigma);
+  std::vector<float> a(static_cast<std::size_t>(kFs)), b(a.size());
+  for (float& v : a) v = float(n(g));
+  for (float& v : b) v = float(n(g));
+  const PerceptualReference ref(a, kFs, {});
+  const std::vector<float> silence(a.size(), 0.0f);
+  const double expected = ref.compare(silence, {}, sigma).psycho, draw = ref.compare(b, {}).psycho,
+               silent = ref.compare(silence, {}).psycho;
+  EXPECT_LT(expected, draw);
+  EXPECT_LT(expected, 0.05 * silent);
+  // Without noise it is the plain comparison.
+  EXPECT_EQ(ref.compare(b, {}, 0.0).psycho, ref.compare(b, {}).psycho);
+}

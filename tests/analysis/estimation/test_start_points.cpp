@@ -160,3 +160,20 @@ TEST(StartPoints, ADominantModeOffTheParetoSetGetsItsTrueStartOnlyFromEveryEigen
   EXPECT_FALSE(has_truth(start_points(m, weights, l0, kGains, 3, StartEigenvalues::pareto)));
   EXPECT_TRUE(has_truth(start_points(m, weights, l0, kGains, 3, StartEigenvalues::every)));
 }
+
+TEST(StartPoints, EigenvalueAlignmentIsTheWeightedShareOfModesOnAnEigenvalue) {
+  const std::vector<Mode> m = true_modes();
+  const std::vector<double> l0 = eigenvalues();
+  const std::vector<double> weights = {3.0, 10.0, 2.0, 5.0, 0.0};  // mode 4 weighs nothing
+  // The true ratio puts every mode on its eigenvalue.
+  EXPECT_DOUBLE_EQ(eigenvalue_alignment(m, weights, l0, kRatio), 1.0);
+  // The ratio that maps mode 1 (the dominant) onto eigenvalue 2 lines up mode 1 alone: 2300/1100 is
+  // not a ratio of any two other frequencies of the set within 0.4 % in eigenvalue.
+  const double wrong = kRatio * l0[1] / l0[2];
+  EXPECT_NEAR(eigenvalue_alignment(m, weights, l0, wrong), 10.0 / 20.0, 1e-12);
+  // Off by 1 % in gamma (0.5 % in frequency), nothing lines up at the default tolerance; at 2 % all does.
+  EXPECT_DOUBLE_EQ(eigenvalue_alignment(m, weights, l0, 1.01 * kRatio), 0.0);
+  EXPECT_DOUBLE_EQ(eigenvalue_alignment(m, weights, l0, 1.01 * kRatio, 0.02), 1.0);
+  EXPECT_DOUBLE_EQ(eigenvalue_alignment(m, {0, 0, 0, 0, 0}, l0, kRatio), 0.0);
+  EXPECT_THROW(eigenvalue_alignment(m, {1.0}, l0, kRatio), std::invalid_argument);
+}
