@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "analysis/audit/baseline_fit.hpp"
+#include "analysis/audit/repeatability_floor.hpp"
 
 namespace ms::audit {
 
@@ -89,7 +90,8 @@ AuditResult run_audit(const AuditData& data, const std::optional<ModalModel>& gi
   const std::vector<Effect> catalog = effect_catalog();
   AuditModel current;
   double gap = in_sample_gap(data, recipe, &current);
-  double cv = cross_validated_gap(data, recipe);
+  std::vector<AuditModel> folds;  // the current recipe's fold models (for the repeatability floor)
+  double cv = cross_validated_gap(data, recipe, &folds);
   result.baseline = current;
   result.modes = current.modes.size();
   result.gap_before_db = gap;
@@ -102,6 +104,7 @@ AuditResult run_audit(const AuditData& data, const std::optional<ModalModel>& gi
     const Effect* best = nullptr;
     double best_improvement = 0.0, best_cv = cv;
     Detection best_detection;
+    std::vector<AuditModel> best_folds;
     for (const Effect& e : catalog) {
       if (std::find(recipe.effects.begin(), recipe.effects.end(), &e) != recipe.effects.end()) continue;
       bool named_before = false;
@@ -122,13 +125,15 @@ AuditResult run_audit(const AuditData& data, const std::optional<ModalModel>& gi
       if (det.passes) {
         Recipe with = recipe;
         with.effects.push_back(&e);
-        c.cv_gap_db = cross_validated_gap(data, with);
+        std::vector<AuditModel> with_folds;
+        c.cv_gap_db = cross_validated_gap(data, with, &with_folds);
         c.improvement_db = cv - c.cv_gap_db - e.penalty_db;
         if (c.improvement_db > best_improvement) {
           best_improvement = c.improvement_db;
           best = &e;
           best_cv = c.cv_gap_db;
           best_detection = det;
+          best_folds = std::move(with_folds);
         }
       }
       round.push_back(c);
@@ -141,11 +146,18 @@ AuditResult run_audit(const AuditData& data, const std::optional<ModalModel>& gi
     result.named.push_back({best->name, gap, next_gap, cv - best_cv, best->parameters(data, next), best_detection.evidence});
     gap = next_gap;
     cv = best_cv;
+    folds = std::move(best_folds);
     current = std::move(next);
   }
   result.final_model = current;
   result.gap_after_db = gap;
   result.cv_gap_after_db = cv;
+  const RepeatabilityFloor repeatability = repeatability_floor(data, folds);
+  result.floor_db = repeatability.floor_db;
+  result.strike_floor_db = repeatability.strike_floor_db;
+  result.share_above_floor = share_above_floor(result.cv_gap_before_db - cv, result.cv_gap_before_db, repeatability.floor_db);
+  for (NamedEffect& n : result.named)
+    n.share_above_floor = share_above_floor(n.cv_improvement_db, result.cv_gap_before_db, repeatability.floor_db);
   result.before = maps_of(data, result.baseline);
   result.after = maps_of(data, result.final_model);
   result.residuals_before = mode_residuals(data, result.baseline);

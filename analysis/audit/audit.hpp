@@ -26,6 +26,7 @@ struct NamedEffect {
   double cv_improvement_db = 0.0;                   // held-out gap improvement (before the penalty)
   Parameters parameters;
   std::string evidence;
+  double share_above_floor = 0.0;  // cv_improvement_db / (held-out baseline gap - repeatability floor)
 };
 
 struct Candidate {
@@ -58,6 +59,11 @@ struct AuditResult {
   std::size_t strikes = 0, modes = 0;
   double gap_before_db = 0.0, gap_after_db = 0.0;
   double cv_gap_before_db = 0.0, cv_gap_after_db = 0.0;
+  // The repeatability floor of the final recipe (repeatability_floor.hpp) and the share of the held-out
+  // gap above it that the named effects close together ("the gap halves": >= 0.5).
+  double floor_db = 0.0;
+  std::vector<double> strike_floor_db;
+  double share_above_floor = 0.0;
   std::vector<NamedEffect> named;
   std::vector<std::vector<Candidate>> rounds;
   std::vector<std::string> untested;  // effects that need more strikes than given, with the reason

@@ -23,8 +23,9 @@ AuditModel fit_recipe(const AuditData& data, const Recipe& recipe, const std::ve
   return model;
 }
 
-double cross_validated_gap(const AuditData& data, const Recipe& recipe) {
+double cross_validated_gap(const AuditData& data, const Recipe& recipe, std::vector<AuditModel>* fold_models) {
   const std::size_t n = data.strike_count();
+  if (fold_models) fold_models->clear();
   if (n < 2) return in_sample_gap(data, recipe);
   double sum = 0.0;
   for (std::size_t k = 0; k < n; ++k) {
@@ -34,6 +35,7 @@ double cross_validated_gap(const AuditData& data, const Recipe& recipe) {
     AuditModel model = fit_recipe(data, recipe, train);
     adapt_strike(data, recipe, model, k);
     sum += strike_gap(model, data, k).gap_db;
+    if (fold_models) fold_models->push_back(std::move(model));
   }
   return sum / double(n);
 }

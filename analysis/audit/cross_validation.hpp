@@ -23,7 +23,9 @@ AuditModel fit_recipe(const AuditData& data, const Recipe& recipe, const std::ve
 void adapt_strike(const AuditData& data, const Recipe& recipe, AuditModel& model, std::size_t strike);
 
 // Mean held-out gap (dB) over leave-one-strike-out folds; with a single strike the in-sample gap.
-double cross_validated_gap(const AuditData& data, const Recipe& recipe);
+// fold_models (if given) receives fold k's model (fitted without strike k, then given its latent values)
+// for every k.
+double cross_validated_gap(const AuditData& data, const Recipe& recipe, std::vector<AuditModel>* fold_models = nullptr);
 
 // In-sample: fitted on every strike, mean gap over every strike.
 double in_sample_gap(const AuditData& data, const Recipe& recipe, AuditModel* fitted = nullptr);

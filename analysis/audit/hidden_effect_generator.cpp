@@ -165,12 +165,15 @@ struct StrikeDraws {
 
 // The object's modes for strike s: scaled to its gain, with the support's excess decay and the split modes.
 ModalModel strike_modes(const HiddenCase& hc, std::size_t s, double scale, const EffectParameters& e,
-                        StrikeDraws& draws) {
+                        const GeneratorOptions& opt, StrikeDraws& draws) {
   ModalModel m;
   const double hold = 0.3 + 0.7 * Uniform(0.0, 1.0)(draws.rng);
+  std::mt19937_64 jitter_rng(hc.seed * 2654435761u + 977u * (s + 1));
+  std::normal_distribution<double> jitter(0.0, 1.0);
   for (std::size_t n = 0; n < hc.object.modes.size(); ++n) {
     Mode mode = hc.object.modes[n];
     mode.amp *= scale * hc.strike_gain[s];
+    if (opt.amplitude_jitter_db > 0.0) mode.amp *= std::pow(10.0, opt.amplitude_jitter_db * jitter(jitter_rng) / 20.0);
     if (e.support_mean_per_s > 0.0) mode.decay_per_s += hold * e.support_mean_per_s * draws.exponential(draws.rng);
     if (std::find(e.doublets.begin(), e.doublets.end(), n) != e.doublets.end()) {
       Mode hi = mode;
@@ -191,7 +194,7 @@ Recording render_strike(const HiddenCase& hc, std::size_t s, double scale, doubl
                         const GeneratorOptions& opt, StrikeDraws& draws) {
   const double fs = opt.sample_rate_hz;
   const std::size_t pre = std::size_t(opt.pre_roll_s * fs), frames = std::size_t(opt.duration_s * fs);
-  ModalModel m = strike_modes(hc, s, scale, e, draws);
+  ModalModel m = strike_modes(hc, s, scale, e, opt, draws);
   Excitation excitation;
   if (e.tau_hard_s > 0.0) {
     excitation.shape = PulseShape::raised_cosine;
@@ -232,6 +235,7 @@ HiddenCase generate_hidden_case(std::uint64_t seed, const std::vector<std::strin
   hc.strike_gain = draw_strike_gains(rng, opt.strikes);
   const double gmax = *std::max_element(hc.strike_gain.begin(), hc.strike_gain.end());
   const EffectParameters e = draw_effects(rng, effects, strengths, hc);
+  if (opt.amplitude_jitter_db > 0.0) hc.summary += printed("; mode amplitudes jittered %.1f dB per strike", opt.amplitude_jitter_db);
   double amax = 0.0;
   for (const Mode& m : hc.object.modes) amax = std::max(amax, m.amp);
   const double scale = 0.3 / (amax * gmax);  // the hardest strike's strongest mode at 0.3 full scale

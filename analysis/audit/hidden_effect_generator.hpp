@@ -19,6 +19,9 @@ struct GeneratorOptions {
   double duration_s = 1.5;
   double sample_rate_hz = 44100.0;
   double pre_roll_s = 0.01;  // silence (faint noise) before each strike
+  // Strikes that move: every mode's amplitude in every strike times 10^(jitter_db N(0,1) / 20), drawn
+  // from a stream of its own (0: the strikes differ only by their gain and the hidden effects).
+  double amplitude_jitter_db = 0.0;
 };
 
 struct HiddenCase {

@@ -3,6 +3,7 @@
 // the gap shrink (analysis/audit/audit.hpp; README "Auditing a model").
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -36,6 +37,7 @@ nlohmann::json result_json(const AuditResult& r, const audit::AuditData& data) {
                      {"gap_before", n.gap_before_db},
                      {"gap_after", n.gap_after_db},
                      {"cv_improvement", n.cv_improvement_db},
+                     {"share_above_floor", n.share_above_floor},
                      {"parameters", params},
                      {"evidence", n.evidence}});
   }
@@ -54,7 +56,8 @@ nlohmann::json result_json(const AuditResult& r, const audit::AuditData& data) {
   nlohmann::json strikes = nlohmann::json::array();
   for (std::size_t s = 0; s < r.strikes; ++s)
     strikes.push_back({{"strike", data.measured.strikes[s].name}, {"gap_before", r.location.strike_gap_db[s]},
-                       {"gap_after", r.after[s].gap_db}, {"gain_db", r.strike_gain_db[s]}});
+                       {"gap_after", r.after[s].gap_db}, {"gain_db", r.strike_gain_db[s]},
+                       {"floor", r.strike_floor_db[s]}});
   // The three worst Bark bands and the worst frame of the baseline.
   nlohmann::json worst_bands = nlohmann::json::array();
   for (std::size_t b : audit::worst_bands(r.location, 3))
@@ -72,6 +75,8 @@ nlohmann::json result_json(const AuditResult& r, const audit::AuditData& data) {
           {"gap_after", r.gap_after_db},
           {"cv_gap_before", r.cv_gap_before_db},
           {"cv_gap_after", r.cv_gap_after_db},
+          {"floor_db", r.floor_db},
+          {"share_above_floor", r.share_above_floor},
           {"strikes", r.strikes},
           {"modes", r.modes},
           {"named_effects", named},
@@ -111,6 +116,21 @@ void write_report(const std::string& dir, const AuditResult& r, const audit::Aud
   std::snprintf(title, sizeof title, "Residual, with the named effects: gap %.2f dB", r.gap_after_db);
   o.title = title;
   plots::residual_map((d / "residual_after.png").string(), audit::mean_gap_map(r.after), duration, 20.0, o);
+  // Per-strike gap before and after, with the repeatability floor as a line.
+  auto per_strike = [](const std::string& name, auto value, std::size_t strikes) {
+    plots::Series s{name, {}};
+    for (std::size_t k = 0; k < strikes; ++k) s.points.push_back({double(k + 1), value(k)});
+    return s;
+  };
+  std::snprintf(title, sizeof title, "Gap per strike; repeatability floor %.2f dB (held-out)", r.floor_db);
+  o.title = title;
+  o.x_label = "strike";
+  o.y_label = "gap [dB]";
+  plots::line_plot((d / "gap_per_strike.png").string(),
+                   {per_strike("baseline", [&](std::size_t k) { return r.before[k].gap_db; }, r.strikes),
+                    per_strike("with effects", [&](std::size_t k) { return r.after[k].gap_db; }, r.strikes),
+                    per_strike("repeatability floor", [&](std::size_t k) { return r.strike_floor_db[k]; }, r.strikes)},
+                   o);
   // Per-mode residuals: amplitude (dB) and decay (%) against frequency, before and after.
   auto series = [](const std::vector<audit::ModeResidual>& res, bool amp, const std::string& name) {
     plots::Series s{name, {}};
@@ -205,12 +225,17 @@ void register_audit(CLI::App& app) {
       }
       std::printf("%zu strikes, %zu modes; gap (%s)\n", r.strikes, r.modes, r.metric.c_str());
       std::printf("baseline: %.2f dB (held-out %.2f dB)\n", r.gap_before_db, r.cv_gap_before_db);
+      std::printf("repeatability floor: %.2f dB (held-out strikes against the best model of the others; "
+                  "%.2f dB of the held-out gap lies above it)\n",
+                  r.floor_db, std::max(0.0, r.cv_gap_before_db - r.floor_db));
       if (r.named.empty()) std::printf("nothing named: no effect in the catalog lowers the held-out gap enough\n");
       for (const auto& n : r.named) {
-        std::printf("+ %-17s gap %.2f -> %.2f dB: %s\n", n.effect.c_str(), n.gap_before_db, n.gap_after_db, n.evidence.c_str());
+        std::printf("+ %-17s gap %.2f -> %.2f dB, closes %.0f %% of the gap above the floor: %s\n", n.effect.c_str(),
+                    n.gap_before_db, n.gap_after_db, 100.0 * n.share_above_floor, n.evidence.c_str());
         for (const auto& [k, v] : n.parameters) std::printf("    %s = %.4g\n", k.c_str(), v);
       }
-      std::printf("final: %.2f dB (held-out %.2f dB)\n", r.gap_after_db, r.cv_gap_after_db);
+      std::printf("final: %.2f dB (held-out %.2f dB; %.0f %% of the gap above the floor closed)\n", r.gap_after_db,
+                  r.cv_gap_after_db, 100.0 * r.share_above_floor);
       for (const auto& u : r.untested) std::printf("not tested: %s\n", u.c_str());
       if (!opt->report.empty()) std::printf("report: %s\n", opt->report.c_str());
     } catch (const audit::AuditError& e) {

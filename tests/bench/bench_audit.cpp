@@ -1,5 +1,5 @@
 // Audit speed: 10 strikes x 2 s (the bar: <= 10 s), hidden support damping + noise floor, and
-// the parts: feature extraction of all strikes vs the audit proper. A reference variant runs the
+// the parts: feature extraction of all strikes and the repeatability floor vs the audit proper. A reference variant runs the
 // cross-validation naively (every fold re-extracts the training strikes' features from audio).
 #include <benchmark/benchmark.h>
 
@@ -8,6 +8,7 @@
 
 #include "analysis/audit/audit.hpp"
 #include "analysis/audit/hidden_effect_generator.hpp"
+#include "analysis/audit/repeatability_floor.hpp"
 
 namespace {
 
@@ -39,6 +40,13 @@ void BM_AuditTenStrikesReverbAndBurst(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_AuditTenStrikesReverbAndBurst)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+// The repeatability floor alone (one leave-one-strike-out pass of the plain model), as run_audit adds it.
+void BM_RepeatabilityFloorTenStrikes(benchmark::State& state) {
+  const auto data = ms::audit::make_audit_data(ten_strikes().recordings);
+  for (auto _ : state) benchmark::DoNotOptimize(ms::audit::repeatability_floor(data, ms::audit::Recipe{}).floor_db);
+}
+BENCHMARK(BM_RepeatabilityFloorTenStrikes)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 void BM_AuditTenStrikesExtractionOnly(benchmark::State& state) {
   const auto hc = ten_strikes();

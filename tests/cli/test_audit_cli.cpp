@@ -38,6 +38,17 @@ TEST(AuditCli, GenerateThenAuditNamesTheHiddenEffectAndWritesAReport) {
   EXPECT_LT(j["gap_after"].get<double>(), 0.5 * j["gap_before"].get<double>());
   EXPECT_NEAR(j["named_effects"][0]["parameters"]["alpha3"].get<double>(), 1.0, 0.6);
   EXPECT_NE(j["named_effects"][0]["evidence"].get<std::string>().find("hybrid"), std::string::npos);
+  // The repeatability floor: these strikes differ only by their gain, so almost all of the held-out
+  // gap lies above it, and the law closes at least half of that (its share is the whole audit's).
+  const double floor_db = j["floor_db"].get<double>();
+  EXPECT_GE(floor_db, 0.0);
+  EXPECT_LT(floor_db, 0.1);
+  EXPECT_GE(j["share_above_floor"].get<double>(), 0.5);
+  EXPECT_NEAR(j["named_effects"][0]["share_above_floor"].get<double>(), j["share_above_floor"].get<double>(), 1e-9);
+  EXPECT_NEAR(j["share_above_floor"].get<double>(),
+              (j["cv_gap_before"].get<double>() - j["cv_gap_after"].get<double>()) /
+                  (j["cv_gap_before"].get<double>() - floor_db),
+              1e-9);
   // The decision trail: one round per named effect plus the last, where nothing passed; the first is
   // also given alone, and in it damping_law passed its detector.
   ASSERT_EQ(j["rounds"].size(), 2u) << r.out;
@@ -47,13 +58,14 @@ TEST(AuditCli, GenerateThenAuditNamesTheHiddenEffectAndWritesAReport) {
   EXPECT_TRUE(law_passed);
   // Locate: per-strike gaps and per-mode residuals of every strike; a hidden law shows in the decays.
   ASSERT_EQ(j["locate"]["strikes"].size(), 5u);
+  for (const auto& st : j["locate"]["strikes"]) EXPECT_GE(st["floor"].get<double>(), 0.0);
   ASSERT_GE(j["locate"]["mode_residuals"].size(), 5u * 8u);
   double worst_decay = 0.0;
   for (const auto& m : j["locate"]["mode_residuals"]) worst_decay = std::max(worst_decay, std::abs(m["decay_rel"].get<double>()));
   EXPECT_GT(worst_decay, 0.05);
   EXPECT_LT(j["locate"]["strike_variation_db"].get<double>(), 0.1);
   for (const char* f : {"residual_before.png", "residual_after.png", "mode_amplitude_residuals.png",
-                        "mode_decay_residuals.png", "damping.png", "model.yaml", "audit.json"})
+                        "mode_decay_residuals.png", "damping.png", "gap_per_strike.png", "model.yaml", "audit.json"})
     EXPECT_GT(fs::file_size(d.file(std::string("report/") + f)), 100u) << f;
   const RunResult s = run_cli("synth " + d.file("report/model.yaml") + " -o " + d.file("improved.wav"), d);
   ASSERT_EQ(s.exit_code, 0) << s.err;

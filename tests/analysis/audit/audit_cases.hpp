@@ -64,7 +64,8 @@ struct Tally {
   std::map<std::string, int> hidden, hit;
   int clean = 0, clean_quiet = 0;
   int with_effect = 0, shrunk = 0;
-  std::vector<double> shrink;
+  int halved_above_floor = 0;  // the held-out gap above the repeatability floor at least halves
+  std::vector<double> shrink, floor_db;
 
   void add(const CasePlan& plan, const audit::AuditResult& r) {
     std::vector<std::string> named;
@@ -83,6 +84,8 @@ struct Tally {
       for (const auto& n : named) hit[h] += n == h;
     }
     ++with_effect;
+    floor_db.push_back(r.floor_db);
+    halved_above_floor += r.share_above_floor >= 0.5;
     const double s = r.gap_before_db > 0 ? 1.0 - r.gap_after_db / r.gap_before_db : 0.0;
     shrink.push_back(s);
     shrunk += s >= 0.5;
@@ -110,6 +113,12 @@ struct Tally {
     std::printf("clean: nothing named in %d of %d (%.0f %%)\n", clean_quiet, clean, clean ? 100.0 * clean_quiet / clean : 0.0);
     std::printf("gap shrinks by >= 50 %% in %d of %d cases with an effect (%.0f %%)\n", shrunk, with_effect,
                 with_effect ? 100.0 * shrunk / with_effect : 0.0);
+    std::vector<double> f = floor_db;
+    std::sort(f.begin(), f.end());
+    std::printf("held-out gap above the repeatability floor halves in %d of %d cases with an effect (%.0f %%); "
+                "floor median %.3f dB, max %.3f dB\n",
+                halved_above_floor, with_effect, with_effect ? 100.0 * halved_above_floor / with_effect : 0.0,
+                f.empty() ? 0.0 : f[f.size() / 2], f.empty() ? 0.0 : f.back());
   }
 };
 
