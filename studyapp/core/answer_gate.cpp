@@ -14,6 +14,7 @@ std::string incomplete_wording(BlockType type) {
     case BlockType::questionnaire: return "Answer every question that has choices.";
     case BlockType::adjust: return "Wait for the new sound.";
     case BlockType::instructions:
+    case BlockType::bs1116:
     case BlockType::mushra: return "";
     default: return "Choose an answer.";
   }
@@ -30,7 +31,7 @@ AnswerGate answer_gate(const Block& block, const TrialInputs& in) {
       return {false, "Listen to every sound before answering (" + std::to_string(heard) + " of " +
                          std::to_string(in.heard.size()) + " heard)."};
     }
-    if (block.type == BlockType::mushra) {
+    if (block.type == BlockType::mushra || block.type == BlockType::bs1116) {
       const auto left = static_cast<std::size_t>(std::count(in.moved.begin(), in.moved.end(), false));
       if (left > 0)
         return {false, "Rate every sound: move each slider at least once (" + std::to_string(left) +

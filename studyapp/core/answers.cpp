@@ -93,6 +93,7 @@ void to_json(json& j, const StaircaseAnswer& a) {
   j["threshold"] = a.threshold ? json(*a.threshold) : json(nullptr);
 }
 void to_json(json& j, const QuestionnaireAnswer& a) { j = a.answers; }
+void to_json(json& j, const Bs1116Answer& a) { j = a.grades; }
 void to_json(json& j, const Answer& a) {
   std::visit([&](const auto& x) { to_json(j, x); }, a);
 }
@@ -111,6 +112,12 @@ void from_json(const json& j, MushraAnswer& a) {
   a.scores = object_of<double>(j, "a score from 0 to 100", [](const json& x) {
     const auto v = finite(x);
     return v && *v >= 0.0 && *v <= 100.0 ? v : std::nullopt;
+  });
+}
+void from_json(const json& j, Bs1116Answer& a) {
+  a.grades = object_of<double>(j, "a grade from 1.0 to 5.0", [](const json& x) {
+    const auto v = finite(x);
+    return v && *v >= kBs1116GradeMin && *v <= kBs1116GradeMax ? v : std::nullopt;
   });
 }
 void from_json(const json& j, MagnitudeAnswer& a) {
@@ -183,6 +190,7 @@ Answer read_stored_answer(const std::string& block_type, const json& v) {
   if (block_type == "adjust") return get_as<AdjustAnswer>(v);
   if (block_type == "staircase") return get_as<StaircaseAnswer>(v);
   if (block_type == "questionnaire") return get_as<QuestionnaireAnswer>(v);
+  if (block_type == "bs1116") return get_as<Bs1116Answer>(v);
   throw AnswerError("no answer format for block type '" + block_type + "'");
 }
 
@@ -242,6 +250,11 @@ Answer read_answer(const Block& block, const Trial& trial, const json& v) {
         const auto& opts = q.questions[i].options;
         return opts.empty() || std::find(opts.begin(), opts.end(), x) != opts.end();
       }, "text (or one of the question's options)");
+      return a;
+    }
+    case BlockType::bs1116: {
+      const auto a = get_as<Bs1116Answer>(v);
+      check_keys(a.grades, trial.stimuli, [](std::size_t, double) { return true; }, "a grade from 1.0 to 5.0");
       return a;
     }
     case BlockType::unknown:

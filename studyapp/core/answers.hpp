@@ -12,6 +12,7 @@
 //   staircase      {"parameter": key, "levels": [...], "correct": [...], "chosen": ["A"|"B", ...],
 //                  "threshold": number|null}; answers stored before the choice was kept have no "chosen"
 //   questionnaire  {"<question id>": "text or option", ...}
+//   bs1116         {"<stimulus>": 1.0..5.0, ...} for A and B (the hidden reference under its own name)
 // The views, the simulated listener and the session write answers through these types; the export, the
 // experimenter view's pictures and the check before storing (response_format.hpp) read them back.
 #pragma once
@@ -58,10 +59,13 @@ struct StaircaseAnswer {
   std::optional<double> threshold;
 };
 struct QuestionnaireAnswer { std::map<std::string, std::string> answers; };  // question id -> text
+// BS.1116 impairment grades, 5.0 imperceptible ... 1.0 very annoying.
+struct Bs1116Answer { std::map<std::string, double> grades; };  // stimulus -> 1.0..5.0
+inline constexpr double kBs1116GradeMin = 1.0, kBs1116GradeMax = 5.0;
 
 using Answer = std::variant<InstructionsAnswer, SameDifferentAnswer, ChoiceAnswer, BipolarAnswer, MushraAnswer,
                             MagnitudeAnswer, IdentifyAnswer, RatingAnswer, AdjustAnswer, StaircaseAnswer,
-                            QuestionnaireAnswer>;
+                            QuestionnaireAnswer, Bs1116Answer>;
 
 // The stored JSON of each type (nlohmann's to_json/from_json; from_json throws AnswerError).
 void to_json(nlohmann::json& j, const InstructionsAnswer& a);
@@ -75,6 +79,7 @@ void to_json(nlohmann::json& j, const RatingAnswer& a);
 void to_json(nlohmann::json& j, const AdjustAnswer& a);
 void to_json(nlohmann::json& j, const StaircaseAnswer& a);
 void to_json(nlohmann::json& j, const QuestionnaireAnswer& a);
+void to_json(nlohmann::json& j, const Bs1116Answer& a);
 void to_json(nlohmann::json& j, const Answer& a);
 void from_json(const nlohmann::json& j, InstructionsAnswer& a);
 void from_json(const nlohmann::json& j, SameDifferentAnswer& a);
@@ -87,6 +92,7 @@ void from_json(const nlohmann::json& j, RatingAnswer& a);
 void from_json(const nlohmann::json& j, AdjustAnswer& a);
 void from_json(const nlohmann::json& j, StaircaseAnswer& a);
 void from_json(const nlohmann::json& j, QuestionnaireAnswer& a);
+void from_json(const nlohmann::json& j, Bs1116Answer& a);
 
 // A MUSHRA score as stored: a whole score (the slider's) as an integer, else the number.
 nlohmann::json mushra_score_json(double score);

@@ -8,7 +8,7 @@ namespace ms {
 const std::vector<std::string>& block_type_names() {
   static const std::vector<std::string> names{"instructions", "ab",       "mushra",    "magnitude",
                                               "identify",     "rating",   "adjust",    "staircase",
-                                              "questionnaire"};
+                                              "questionnaire", "bs1116"};
   return names;
 }
 
@@ -41,6 +41,10 @@ std::vector<StimulusRef> Block::referenced() const {
     if (m->reference) out.push_back(*m->reference);
     out.insert(out.end(), m->conditions.begin(), m->conditions.end());
     if (!m->auto_anchors) out.insert(out.end(), m->anchors.begin(), m->anchors.end());
+  }
+  if (const auto* t = std::get_if<Bs1116Block>(&body)) {
+    out.push_back(t->reference);
+    out.insert(out.end(), t->conditions.begin(), t->conditions.end());
   }
   if (const auto* g = std::get_if<MagnitudeBlock>(&body)) {
     if (g->modulus) out.insert(out.end(), g->modulus->begin(), g->modulus->end());

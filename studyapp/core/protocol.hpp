@@ -41,7 +41,7 @@ struct StimulusSource {
 };
 
 enum class BlockType { instructions, ab, mushra, magnitude, identify, rating, adjust, staircase,
-                       questionnaire, unknown };
+                       questionnaire, bs1116, unknown };
 const std::vector<std::string>& block_type_names();  // in enum order, without "unknown"
 std::string to_string(BlockType t);
 
@@ -113,9 +113,17 @@ struct Question {
   std::vector<std::string> options;  // empty: free text
 };
 struct QuestionnaireBlock { std::vector<Question> questions; };
+// ITU-R BS.1116 double-blind triple-stimulus with hidden reference: per condition a trial of the open
+// reference and two sounds A and B, one of them the reference itself (which, drawn per trial); both
+// A and B are graded on the continuous five-grade impairment scale 1.0-5.0 (5.0 imperceptible).
+struct Bs1116Block {
+  StimulusRef reference;
+  std::vector<StimulusRef> conditions;
+};
 
 using BlockBody = std::variant<std::monostate, InstructionsBlock, AbBlock, MushraBlock, MagnitudeBlock,
-                               IdentifyBlock, RatingBlock, AdjustBlock, StaircaseBlock, QuestionnaireBlock>;
+                               IdentifyBlock, RatingBlock, AdjustBlock, StaircaseBlock, QuestionnaireBlock,
+                               Bs1116Block>;
 
 struct Block {
   BlockType type = BlockType::unknown;

@@ -185,6 +185,16 @@ MushraBlock parse_mushra(const YamlReader& r, const YAML::Node& n, const std::st
   return m;
 }
 
+Bs1116Block parse_bs1116(const YamlReader& r, const YAML::Node& n, const std::string& p) {
+  r.check_keys(n, p, {"type", "id", "randomize", "training", "shuffle", "break_after", "repeats", "listen_all",
+                      "reference", "conditions", "prompt", "feedback"});
+  if (!n["reference"]) r.fail(n, p, "a bs1116 block needs a 'reference' (the open and hidden reference)");
+  Bs1116Block t;
+  t.reference = ref(r, n["reference"], p + ".reference");
+  t.conditions = refs(r, n["conditions"], p + ".conditions");
+  return t;
+}
+
 MagnitudeBlock parse_magnitude(const YamlReader& r, const YAML::Node& n, const std::string& p, const Block& b) {
   r.check_keys(n, p, {"type", "id", "randomize", "training", "shuffle", "break_after", "repeats", "modulus", "pairs",
                       "stimuli", "listen_all", "prompt", "feedback", "modulus_value"});
@@ -308,6 +318,7 @@ BlockBody parse_body(const YamlReader& r, const YAML::Node& n, const std::string
     case BlockType::adjust: return parse_adjust(r, n, p, b);
     case BlockType::staircase: return parse_staircase(r, n, p, b);
     case BlockType::questionnaire: return parse_questionnaire(r, n, p);
+    case BlockType::bs1116: return parse_bs1116(r, n, p);
     case BlockType::unknown: break;
   }
   return std::monostate{};

@@ -139,6 +139,13 @@ struct Checker {
       if (!m->reference) empty("MUSHRA needs a 'reference' (the hidden and open reference)");
       if (m->conditions.empty()) empty("no conditions");
     }
+    if (const auto* t = std::get_if<Bs1116Block>(&b.body)) {
+      if (t->conditions.empty()) empty("no conditions");
+      for (const StimulusRef& c : t->conditions)
+        if (c.name == t->reference.name)
+          problems.push_back(at(c.where, who + "condition '" + c.name + "' is the reference, which every trial "
+                                                "already plays as the hidden reference"));
+    }
     if (const auto* g = std::get_if<MagnitudeBlock>(&b.body)) {
       if (g->all_pairs && g->stimuli.size() < 2) empty("'pairs: all' needs at least two stimuli");
       if (!g->all_pairs && g->pairs.empty()) empty("no pairs");

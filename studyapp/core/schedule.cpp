@@ -102,6 +102,18 @@ std::vector<Trial> block_trials(const Block& b, std::size_t block_index, std::mt
       if (b.randomize) fisher_yates(t.stimuli, rng);
       out.push_back(t);
     }
+  } else if (const auto* t3 = std::get_if<Bs1116Block>(&b.body)) {
+    // One trial per condition and repeat: A and B are the condition and the hidden reference, which
+    // is which drawn per trial.
+    for (int rep = 0; rep < b.repeats; ++rep)
+      for (const auto& c : t3->conditions) {
+        Trial t = proto;
+        t.repeat = static_cast<std::size_t>(rep);
+        t.reference = t3->reference.name;
+        t.stimuli = {c.name, t3->reference.name};
+        if (b.randomize && uniform_below(rng, 2) == 1) std::swap(t.stimuli[0], t.stimuli[1]);
+        out.push_back(t);
+      }
   } else if (const auto* g = std::get_if<MagnitudeBlock>(&b.body)) {
     std::vector<StimulusPair> pairs = g->pairs;
     if (g->all_pairs)

@@ -3,6 +3,7 @@
 #include "studyapp/core/simulated_listener.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 
 
@@ -102,16 +103,37 @@ SimulatedAnswer SimulatedListener::answer_ab(AbMode mode, const Trial& trial, Un
   return a;
 }
 
-SimulatedAnswer SimulatedListener::answer_mushra(const Trial& trial, UnitNormal& unit) {
-  const auto& s = trial.stimuli;
-  MushraAnswer scores;
-  double hardest = 1e9;
-  for (const auto& name : s) {
+// Each sound's grade from its heard distance to the open reference; `hardest` the smallest distance.
+std::map<std::string, double> SimulatedListener::graded(const Trial& trial, const std::function<double(double)>& grade,
+                                                        double& hardest) {
+  std::map<std::string, double> out;
+  hardest = 1e9;
+  for (const auto& name : trial.stimuli) {
     const double d = noisy(distance_db(trial.reference, name));
     hardest = std::min(hardest, d);
-    scores.scores[name] = std::round(clamp(100.0 * std::exp(-d / 6.0), 0.0, 100.0));
+    out[name] = grade(d);
   }
-  return {scores, 4000.0 * double(s.size()) + reaction_ms(hardest, unit), 2 * int(s.size()) + 1};
+  return out;
+}
+
+SimulatedAnswer SimulatedListener::answer_mushra(const Trial& trial, UnitNormal& unit) {
+  double hardest = 0;
+  const MushraAnswer scores{graded(trial, [](double d) { return std::round(clamp(100.0 * std::exp(-d / 6.0), 0.0, 100.0)); },
+                                   hardest)};
+  const auto n = trial.stimuli.size();
+  return {scores, 4000.0 * double(n) + reaction_ms(hardest, unit), 2 * int(n) + 1};
+}
+
+// BS.1116: the impairment grade falls from 5.0 with the heard distance (the hidden reference, at
+// distance 0 but for the listener's noise, near 5.0), to one decimal.
+SimulatedAnswer SimulatedListener::answer_bs1116(const Trial& trial, UnitNormal& unit) {
+  double hardest = 0;
+  const Bs1116Answer grades{graded(trial, [](double d) {
+    const double grade = 1.0 + 4.0 * std::exp(-std::max(0.0, d) / 6.0);
+    return std::round(10.0 * clamp(grade, kBs1116GradeMin, kBs1116GradeMax)) / 10.0;
+  }, hardest)};
+  const auto n = trial.stimuli.size();
+  return {grades, 4000.0 * double(n) + reaction_ms(hardest, unit), 2 * int(n) + 1};
 }
 
 SimulatedAnswer SimulatedListener::answer_magnitude(const MagnitudeBlock& m, const Trial& trial, UnitNormal& unit) {
@@ -181,6 +203,8 @@ SimulatedAnswer SimulatedListener::answer(const Block& block, const Trial& trial
       return answer_ab(std::get<AbBlock>(block.body).mode, trial, unit);
     case BlockType::mushra:
       return answer_mushra(trial, unit);
+    case BlockType::bs1116:
+      return answer_bs1116(trial, unit);
     case BlockType::magnitude:
       return answer_magnitude(std::get<MagnitudeBlock>(block.body), trial, unit);
     case BlockType::identify:

@@ -4,6 +4,7 @@
 // reaction times grow with how hard the decision was.
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <random>
 #include <string>
@@ -43,7 +44,9 @@ class SimulatedListener {
   using UnitNormal = std::normal_distribution<double>;
   double reaction_ms(double distance_db, UnitNormal& unit);  // harder decisions take longer
   SimulatedAnswer answer_ab(AbMode mode, const Trial& trial, UnitNormal& unit);
+  std::map<std::string, double> graded(const Trial& trial, const std::function<double(double)>& grade, double& hardest);
   SimulatedAnswer answer_mushra(const Trial& trial, UnitNormal& unit);
+  SimulatedAnswer answer_bs1116(const Trial& trial, UnitNormal& unit);
   SimulatedAnswer answer_magnitude(const MagnitudeBlock& block, const Trial& trial, UnitNormal& unit);
   SimulatedAnswer answer_identify(const IdentifyBlock& block, const Trial& trial, UnitNormal& unit);
   SimulatedAnswer answer_rating(const RatingBlock& block, const Trial& trial, UnitNormal& unit);

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 
 #include "studyapp/core/answers.hpp"
@@ -75,7 +76,8 @@ const std::map<std::string, std::vector<std::string>>& type_columns() {
       {"rating", {"stimulus", "attribute", "value"}},
       {"adjust", {"stimulus", "key", "value", "plays", "rt_ms"}},
       {"staircase", {"stimulus", "parameter", "step", "level", "next_level", "correct", "threshold"}},  // + chosen
-      {"questionnaire", {"question", "answer"}}};
+      {"questionnaire", {"question", "answer"}},
+      {"bs1116", {"condition", "reference", "hidden_reference", "condition_grade", "reference_grade", "diffgrade"}}};
   return c;
 }
 
@@ -210,6 +212,23 @@ std::map<std::string, std::string> tidy_tables(const std::vector<ResponseRow>& r
     } else if (const auto* track = std::get_if<StaircaseAnswer>(&answer)) {
       const auto* sb = block ? std::get_if<StaircaseBlock>(&block->body) : nullptr;
       for (std::vector<std::string>& row : staircase_rows(*track, sb, at(0), staircase_choices)) add(std::move(row), at(0));
+    } else if (const auto* bs = std::get_if<Bs1116Answer>(&answer)) {
+      // Which of A and B was the hidden reference comes from the block (the stored trial names both).
+      const auto* tb = block ? std::get_if<Bs1116Block>(&block->body) : nullptr;
+      const std::string ref = tb ? tb->reference.name : "";
+      const bool ref_is_a = !ref.empty() && at(0) == ref, ref_is_b = !ref.empty() && at(1) == ref;
+      const std::string condition = ref_is_a ? at(1) : ref_is_b ? at(0) : "";
+      const auto grade = [&](const std::string& name) {
+        const auto g = bs->grades.find(name);
+        return g == bs->grades.end() ? std::optional<double>() : std::optional<double>(g->second);
+      };
+      const auto gc = grade(condition), gr = grade(ref);
+      if (ref_is_a == ref_is_b || !gc || !gr) {
+        add({"NA", ref.empty() ? "NA" : ref, "NA", "NA", "NA", "NA"}, "");
+      } else {
+        add({condition, ref, ref_is_a ? "A" : "B", csv::number(*gc), csv::number(*gr), csv::number(std::round((*gc - *gr) * 1e6) / 1e6)},
+            condition);
+      }
     } else if (const auto* questionnaire = std::get_if<QuestionnaireAnswer>(&answer)) {
       for (const auto& [q, text] : questionnaire->answers) add({q, text}, "");
     }

@@ -206,8 +206,7 @@ class Importer {
     if (type == "generic" || type == "volume") instructions(n, p, type);
     else if (type == "consent") consent(n, p);
     else if (type == "mushra") mushra(n, p);
-    else if (type == "bs1116") note(n["type"], p + ".type", "bs1116 page '" + page_id(n, p, type, false) +
-                                                                "' not carried over: there is no BS.1116 block type");
+    else if (type == "bs1116") bs1116(n, p);
     else if (type == "paired_comparison") paired(n, p);
     else if (type == "finish") finish(n, p);
     else likert(n, p, type);
@@ -355,6 +354,28 @@ class Importer {
       note(n["switchBack"], p + ".switchBack", "not carried over: switching keeps the playing position");
     if (n["strict"] && !is_true(n["strict"]))
       note(n["strict"], p + ".strict", "not carried over: the protocol is always checked against BS.1534");
+    prompt(b, n, p);
+    blocks_.push_back(b);
+  }
+
+  // BS.1116: each condition (and each anchor webMUSHRA would create, as a low-passed reference)
+  // against the open and the hidden reference.
+  void bs1116(const YAML::Node& n, const std::string& p) {
+    const std::string id = page_id(n, p, "bs1116");
+    YAML::Node b = block("bs1116", id);
+    const std::string ref = reference(n, p, id);
+    b["reference"] = ref;
+    std::vector<std::string> graded = conditions(n, p, id);
+    for (const auto& [key, hz] : {std::pair{"createAnchor35", 3500}, {"createAnchor70", 7000}}) {
+      if (!is_true(n[key])) continue;
+      const std::string anchor = ref + "_lp" + std::to_string(hz);
+      YAML::Node s;
+      s["derive"] = ref;
+      s["lowpass_hz"] = hz;
+      stimuli_[anchor] = flow(s);
+      graded.push_back(anchor);
+    }
+    b["conditions"] = names(graded);
     prompt(b, n, p);
     blocks_.push_back(b);
   }

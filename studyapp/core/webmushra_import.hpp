@@ -7,12 +7,15 @@
 //   consent                   instructions + a one-question questionnaire (mustConsent: "I agree" only)
 //   mushra                    mushra (reference, conditions; createAnchor35 + createAnchor70 -> anchors:
 //                             auto; one of them -> that low-passed reference as the anchor)
+//   bs1116                    bs1116 (reference, conditions; each createAnchor35/70 adds that low-passed
+//                             reference as a condition)
 //   paired_comparison         ab, mode preference, one pair [reference, condition] per condition
 //   likert_single_stimulus,   rating, one attribute named after the page, one point per response
 //   likert_multi_stimulus     (the first and last response labels at the ends)
 //   finish                    questionnaire (text, long_text and number as free text; likert as options)
 //
-// What a protocol cannot say (waveforms, loop ranges, BS.1116 pages, random page order, the unforced
+// A random page group whose pages are one block each becomes a shuffle group.
+// What a protocol cannot say (waveforms, loop ranges, random groups of nested lists, the unforced
 // paired-comparison alternative, intermediate Likert labels) is one located note each; the import
 // still succeeds. What cannot be read at all (bad YAML, an unknown page type, an audio file that is
 // missing, outside webMUSHRA's root or not audio, sample rates that differ) is an InputError.

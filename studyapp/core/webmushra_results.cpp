@@ -30,6 +30,16 @@ std::string mushra_stimulus(const Protocol* p, const MushraBlock* block, const s
   return name;
 }
 
+// The name webMUSHRA gives a BS.1116 condition: "anchor35", "anchor70" for the low-passed reference.
+std::string bs1116_condition(const Protocol* p, const Bs1116Block& block, const std::string& name) {
+  const StimulusSource* s = p ? p->find_stimulus(name) : nullptr;
+  if (s && s->kind == StimulusKind::derived && s->derive_from.name == block.reference.name) {
+    if (s->lowpass_hz == 3500) return "anchor35";
+    if (s->lowpass_hz == 7000) return "anchor70";
+  }
+  return name;
+}
+
 std::string milliseconds(double ms) { return std::to_string(std::llround(ms)); }
 
 }  // namespace
@@ -60,7 +70,9 @@ std::map<std::string, std::string> webmushra_tables(const std::vector<ResponseRo
       {"mushra.csv", {"trial_id", "rating_stimulus", "rating_score", "rating_time", "rating_comment"}},
       {"paired_comparison.csv",
        {"trial_id", "choice_reference", "choice_non_reference", "choice_answer", "choice_time", "choice_comment"}},
-      {"lss.csv", {"trial_id", "stimuli_rating", "stimuli", "rating_time"}}};
+      {"lss.csv", {"trial_id", "stimuli_rating", "stimuli", "rating_time"}},
+      {"bs1116.csv", {"trial_id", "rating_reference", "rating_non_reference", "rating_reference_score",
+                      "rating_non_reference_score", "rating_time", "choice_comment"}}};
   std::map<std::string, std::string> out;
   std::set<std::string> left_out;
   for (const ResponseRow& r : rows) {
@@ -108,6 +120,14 @@ std::map<std::string, std::string> webmushra_tables(const std::vector<ResponseRo
       if (!pair) continue;
       const std::string chosen = choice->chosen == AbInterval::a ? at(0) : at(1);
       add("paired_comparison.csv", {pair->first, pair->second, chosen, milliseconds(r.rt_ms), ""});
+    } else if (const auto* bs = std::get_if<Bs1116Answer>(&answer);
+               bs && block && std::get_if<Bs1116Block>(&block->body)) {
+      const auto& tb = std::get<Bs1116Block>(block->body);
+      const std::string condition = at(0) == tb.reference.name ? at(1) : at(0);
+      const auto gr = bs->grades.find(tb.reference.name), gc = bs->grades.find(condition);
+      if (gr == bs->grades.end() || gc == bs->grades.end()) continue;
+      add("bs1116.csv", {"reference", bs1116_condition(protocol, tb, condition), csv::number(gr->second),
+                         csv::number(gc->second), milliseconds(r.rt_ms), ""});
     } else if (const auto* rating = std::get_if<RatingAnswer>(&answer); rating && rating->points.size() == 1) {
       add("lss.csv", {std::to_string(rating->points.begin()->second), at(0), milliseconds(r.rt_ms)});
     } else if (r.block_type != "instructions" && r.block_type != "questionnaire") {

@@ -5,6 +5,9 @@
 //   paired_comparison.csv  ..., trial_id, choice_reference, choice_non_reference, choice_answer,
 //                          choice_time, choice_comment
 //   lss.csv                ..., trial_id, stimuli_rating, stimuli, rating_time
+//   bs1116.csv             ..., trial_id, rating_reference, rating_non_reference, rating_reference_score,
+//                          rating_non_reference_score, rating_time, choice_comment (one row per trial:
+//                          the hidden reference's grade and the condition's)
 // session_test_id is the study id, trial_id the block id, session_uuid the study and session number;
 // the questionnaire columns are the question ids of the study's questionnaire blocks, filled with the
 // session's answers. MUSHRA ratings of the hidden reference are named "reference" and those of the

@@ -83,6 +83,7 @@ TrialView* make_trial_view(StudyController& controller, QWidget* parent);
 TrialView* make_instructions_view(StudyController& c, QWidget* parent);
 TrialView* make_ab_view(StudyController& c, QWidget* parent);
 TrialView* make_mushra_view(StudyController& c, QWidget* parent);
+TrialView* make_bs1116_view(StudyController& c, QWidget* parent);
 TrialView* make_magnitude_view(StudyController& c, QWidget* parent);
 TrialView* make_identify_view(StudyController& c, QWidget* parent);
 TrialView* make_rating_view(StudyController& c, QWidget* parent);

@@ -11,8 +11,9 @@ namespace ms::web {
 
 nlohmann::json stored_answer(const Block& block, const Presentation& p, const nlohmann::json& sent) {
   switch (block.type) {
-    case BlockType::mushra: {
-      if (!sent.is_object()) throw Refusal(422, "a MUSHRA answer gives a score per sound");
+    case BlockType::mushra:
+    case BlockType::bs1116: {
+      if (!sent.is_object()) throw Refusal(422, "the answer gives a grade per sound");
       nlohmann::json by_name = nlohmann::json::object();
       for (const auto& [id, score] : sent.items()) {
         const auto i = find_sound(p, id);
@@ -41,7 +42,7 @@ TrialInputs trial_inputs(const Block& block, const Trial& trial, const Presentat
                          const nlohmann::json& moved_ids) {
   TrialInputs in;
   for (const PresentedSound& s : p.sounds) in.heard.push_back(s.heard);
-  if (block.type == BlockType::mushra) {
+  if (block.type == BlockType::mushra || block.type == BlockType::bs1116) {
     in.moved.assign(p.sounds.size() > 0 ? p.sounds.size() - 1 : 0, false);
     if (moved_ids.is_array())
       for (const auto& id : moved_ids)

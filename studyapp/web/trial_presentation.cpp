@@ -92,6 +92,7 @@ Presentation present(Session& session, StimulusCache& cache) {
       break;
     }
     case BlockType::mushra:
+    case BlockType::bs1116:
       p.sounds.push_back(sound_of(cache, trial.reference, "Reference"));
       for (std::size_t i = 0; i < names.size(); ++i) p.sounds.push_back(sound_of(cache, names[i], mushra_letter(i)));
       break;

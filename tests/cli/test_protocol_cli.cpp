@@ -23,7 +23,7 @@ TEST(ProtocolCli, DemoChecksClean) {
   EXPECT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_TRUE(j["problems"].empty());
-  EXPECT_EQ(j["blocks"], 10);
+  EXPECT_EQ(j["blocks"], 11);
 }
 
 TEST(ProtocolCli, EveryProblemOnItsOwnLineAndExit2) {

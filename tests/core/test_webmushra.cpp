@@ -167,7 +167,7 @@ TEST(WebMushraImport, WhatAProtocolCannotSayIsOneLocatedNoteEach) {
           "stimuli: {C1: configs/audio/c3.wav}}\n";
   const WebMushraImport w = root.import(page);
   for (const char* part : {"test.yaml:15:19: pages[0].showWaveform", "enableLooping", "switchBack", "colour: not a key of a mushra page",
-                           "no BS.1116 block", "forced choice", "'C1_pc': 'C1' is another file"})
+                           "forced choice", "'C1_pc': 'C1' is another file"})
     EXPECT_TRUE(has_note(w, part)) << part;
   for (const std::string& n : w.notes) EXPECT_EQ(n.find('\n'), std::string::npos) << n;
 }
@@ -222,8 +222,8 @@ TEST(WebMushraImport, BadConfigsAreOneLocatedLine) {
     EXPECT_NE(e.find(expected), std::string::npos) << pages << "\n got: " << e;
     EXPECT_EQ(e.find('\n'), std::string::npos) << e;
   }
-  EXPECT_NE(import_error(root, "  - {type: bs1116, reference: configs/audio/ref.wav, stimuli: {A: configs/audio/c1.wav}}\n")
-                .find("no page becomes a block"),
+  EXPECT_NE(import_error(root, "  - {type: finish, name: Done}\n").find("no page becomes a block"), std::string::npos);
+  EXPECT_NE(import_error(root, "  - {type: bs1116, stimuli: {A: configs/audio/c1.wav}}\n").find("missing 'reference'"),
             std::string::npos);
 }
 
@@ -235,6 +235,8 @@ TEST(WebMushraResults, AnImportedStudyComesBackInWebMushrasTables) {
       " C2: configs/audio/c2.wav}}\n"
       "  - {type: likert_single_stimulus, id: nat, stimuli: {C1: configs/audio/c1.wav, C3: configs/audio/c3.wav},"
       " response: [{value: a}, {value: b}, {value: c}]}\n"
+      "  - {type: bs1116, id: bs, reference: configs/audio/ref.wav, createAnchor35: true,"
+      " stimuli: {C2: configs/audio/c2.wav}}\n"
       "  - {type: finish, questionnaire: [{type: likert, name: phones, label: Phones, response: [{value: closed}]}]}\n";
   const WebMushraImport w = root.import(pages);
   root.dir.write("study.yaml", w.protocol_yaml);
@@ -248,7 +250,7 @@ TEST(WebMushraResults, AnImportedStudyComesBackInWebMushrasTables) {
     ASSERT_TRUE(run_autopilot(o).finished);
   }
   const ExportSummary s = export_webmushra(o.db_path, root.dir.file("out"));
-  EXPECT_EQ(s.tables, (std::vector<std::string>{"lss.csv", "mushra.csv", "paired_comparison.csv"}));
+  EXPECT_EQ(s.tables, (std::vector<std::string>{"bs1116.csv", "lss.csv", "mushra.csv", "paired_comparison.csv"}));
   const TidyCsv mushra = TidyCsv::read(root.dir.file("out/mushra.csv"));
   EXPECT_EQ(mushra.header(), (std::vector<std::string>{"session_test_id", "phones", "session_uuid", "trial_id",
                                                        "rating_stimulus", "rating_score", "rating_time",
@@ -272,6 +274,25 @@ TEST(WebMushraResults, AnImportedStudyComesBackInWebMushrasTables) {
     const std::string answer = pc.cell(r, pc.column("choice_answer"));
     EXPECT_TRUE(answer == "reference" || answer == pc.cell(r, pc.column("choice_non_reference"))) << answer;
   }
+  // BS.1116: one row per condition and session (C2 and the 3.5 kHz anchor webMUSHRA would create), the
+  // hidden reference's grade beside the condition's, both on 1.0-5.0.
+  const TidyCsv bs = TidyCsv::read(root.dir.file("out/bs1116.csv"));
+  EXPECT_EQ(bs.header(), (std::vector<std::string>{"session_test_id", "phones", "session_uuid", "trial_id",
+                                                   "rating_reference", "rating_non_reference", "rating_reference_score",
+                                                   "rating_non_reference_score", "rating_time", "choice_comment"}));
+  ASSERT_EQ(bs.rows(), 2u * 2u);
+  std::vector<std::string> graded;
+  for (std::size_t r = 0; r < bs.rows(); ++r) {
+    EXPECT_EQ(bs.cell(r, bs.column("trial_id")), "bs");
+    EXPECT_EQ(bs.cell(r, bs.column("rating_reference")), "reference");
+    graded.push_back(bs.cell(r, bs.column("rating_non_reference")));
+    for (const char* col : {"rating_reference_score", "rating_non_reference_score"}) {
+      const double grade = bs.number(r, bs.column(col));
+      EXPECT_TRUE(grade >= 1.0 && grade <= 5.0) << grade;
+    }
+  }
+  std::sort(graded.begin(), graded.end());
+  EXPECT_EQ(graded, (std::vector<std::string>{"C2", "C2", "anchor35", "anchor35"}));
   const TidyCsv lss = TidyCsv::read(root.dir.file("out/lss.csv"));
   ASSERT_EQ(lss.rows(), 4u);
   for (std::size_t r = 0; r < lss.rows(); ++r) {

@@ -155,6 +155,17 @@ inline void answer_trial(ms::gui::MainWindow& w, DriveLog& log) {
       QTest::mouseClick(next, Qt::LeftButton);
       return;
     }
+    case ms::BlockType::bs1116: {
+      if (!next->isEnabled()) log.listen_rule.push_back("bs1116");
+      int k = 0;
+      for (auto* s : children_with_prefix<QSlider>(view, "mushra-slider-")) {
+        for (int i = 0; i <= k; ++i) QTest::keyClick(s, Qt::Key_PageDown);  // from 5.0 down
+        ++k;
+      }
+      play_all();
+      QTest::mouseClick(next, Qt::LeftButton);
+      return;
+    }
     case ms::BlockType::magnitude: {
       auto* entry = child<QLineEdit>(view, "magnitude");
       QTest::keyClicks(entry, "50");

@@ -60,7 +60,7 @@ TEST(ReadmePictures, EveryViewOnTheGivenScreen) {
       wait_until([&] { auto* p = v->findChild<QPushButton*>("play-0"); return p && p->isEnabled(); });
     shoot(win, dir, ms::to_string(type));
   }));
-  EXPECT_EQ(shot.size(), 9u);
+  EXPECT_EQ(shot.size(), ms::block_type_names().size());
   ms::gui::ExperimenterWindow experimenter(QString::fromStdString(db));
   experimenter.move(screen.topLeft());
   experimenter.resize(screen.size());

@@ -29,7 +29,7 @@ TEST(SessionDrive, WholeDemoSessionThroughTheViews) {
   ASSERT_TRUE(drive(w, log));
 
   // Every block type was shown and answered; the demo has one break (identify, break_after: 2).
-  EXPECT_EQ(log.seen.size(), 9u);
+  EXPECT_EQ(log.seen.size(), ms::block_type_names().size());
   EXPECT_EQ(static_cast<std::size_t>(log.trials), total);
   EXPECT_GE(log.breaks, 1);
   EXPECT_GT(log.staircase_steps, 2);

@@ -126,6 +126,15 @@ export class Participant {
         }
         break;
       }
+      case 'bs1116': {
+        await this.hearAll();
+        const sliders = page.locator('#view input[type=range]');
+        for (let i = 0; i < await sliders.count(); ++i) {
+          await sliders.nth(i).focus();
+          for (let k = 0; k <= i * 7 + 2; ++k) await page.keyboard.press('ArrowDown');  // from 5.0 down
+        }
+        break;
+      }
       case 'magnitude':
         await this.hearAll();
         await page.locator('#magnitude').fill('');

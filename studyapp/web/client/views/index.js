@@ -1,6 +1,7 @@
 // One view per block type, as in the window.
 import ab from './ab.js';
 import adjust from './adjust.js';
+import bs1116 from './bs1116.js';
 import identify from './identify.js';
 import instructions from './instructions.js';
 import magnitude from './magnitude.js';
@@ -9,4 +10,4 @@ import questionnaire from './questionnaire.js';
 import rating from './rating.js';
 import staircase from './staircase.js';
 
-export const views = { ab, adjust, identify, instructions, magnitude, mushra, questionnaire, rating, staircase };
+export const views = { ab, adjust, bs1116, identify, instructions, magnitude, mushra, questionnaire, rating, staircase };

@@ -1,42 +1,10 @@
-// MUSHRA (ITU-R BS.1534): the open reference, then per lettered sound a play button and a 0-100 slider
-// beside the five quality labels; clicking a sound while one plays switches at the same moment; the
-// sounds loop. Keys: 1 plays the reference, 2..9 the lettered sounds. The answer is keyed by the
-// sounds' opaque ids: the page never knows which is the hidden reference or an anchor.
-import { el, prompt, soundButtons } from './common.js';
+// MUSHRA (ITU-R BS.1534): 0-100 quality against the open reference; the hidden reference and the
+// anchors are among the lettered sounds.
+import graded from './graded.js';
 
 export default function mushra(trial) {
-  const page = trial.page;
-  prompt(trial, 'Rate the quality of each sound compared with the reference. Click another sound while one plays to switch at the same moment.');
-  trial.player.setLoop(true);
-  soundButtons(trial, [0], { switching: true });
-  const grid = el('div', { class: 'mushra' });
-  grid.append(el('div', { class: 'labels' }, ...['Excellent', 'Good', 'Fair', 'Poor', 'Bad'].map((q) => el('span', { text: q }))));
-  const moved = new Set();
-  const sliders = [];
-  for (let i = 1; i < page.sounds.length; ++i) {
-    const column = el('div', { class: 'column' });
-    const slider = el('input', { type: 'range', min: '0', max: '100', step: '1', value: '0', id: `rate-${i}`,
-                                 'aria-label': `Rating of ${page.sounds[i].label}` });
-    const value = el('output', { text: '0' });
-    slider.addEventListener('input', () => { moved.add(i); value.textContent = slider.value; trial.refresh(); });
-    column.append(slider, value);
-    soundButtons(trial, [i], { switching: true, parent: column });
-    sliders.push([i, slider]);
-    grid.append(column);
-  }
-  trial.root.append(grid);
-  trial.keys = (key) => {
-    const n = Number(key);
-    if (n >= 1 && n <= page.sounds.length) {
-      const i = n - 1;
-      trial.player.playingIndex() >= 0 ? trial.player.switchTo(i) : trial.player.play(i);
-    }
-  };
-  const left = () => sliders.length - moved.size;
-  return {
-    answer: () => Object.fromEntries(sliders.map(([i, s]) => [page.sounds[i].id, Number(s.value)])),
-    moved: () => [...moved].map((i) => page.sounds[i].id),
-    complete: () => left() === 0,
-    missing: () => `Rate every sound: move each slider at least once (${left()} ${left() === 1 ? 'is' : 'are'} not rated yet).`,
-  };
+  return graded(trial, {
+    prompt: 'Rate the quality of each sound compared with the reference. Click another sound while one plays to switch at the same moment.',
+    labels: ['Excellent', 'Good', 'Fair', 'Poor', 'Bad'], min: 0, max: 100, step: 1, start: 0, decimals: 0,
+  });
 }
