@@ -3,7 +3,8 @@
 // (gain, and each named effect's per-strike values); the best model of strike k is then that model's
 // prediction for k corrected, cell by cell of both spectrograms, by the mean dB residual
 // (measured - model) of the training strikes: whatever the other strikes agree on beyond the model is
-// predicted, so what is left is how much repeated strikes disagree. Gain-only copies of one recording
+// predicted, so what is left is how much repeated strikes disagree (where the fold's plain model does
+// better on strike k, residuals tied to a per-strike value, that gap is the floor). Gain-only copies of one recording
 // give 0 dB; strikes that move (per-strike mode amplitudes beyond a gain) give a floor no catalog
 // effect can close.
 #pragma once
