@@ -10,7 +10,7 @@ export default function graded(trial, scale) {
   prompt(trial, scale.prompt);
   trial.player.setLoop(true);
   soundButtons(trial, [0], { switching: true });
-  const grid = el('div', { class: 'mushra' });
+  const grid = el('div', { class: 'graded' });
   grid.append(el('div', { class: 'labels' }, ...scale.labels.map((q) => el('span', { text: q }))));
   const moved = new Set();
   const sliders = [];

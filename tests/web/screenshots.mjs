@@ -1,0 +1,41 @@
+// Pictures of the browser client for the README: the demo study in Debian's chromium at 1024x600
+// (docs/images/web-*.png) and at a device scale of 1.5 (build/web-shots-150/), one per block type, and
+// the experimenter page. Not a test; run by hand after a build:
+//   MODALSTUDY_BIN=build/bin/modalstudy node tests/web/screenshots.mjs [OUTDIR]
+import { mkdirSync } from 'node:fs';
+import { join } from 'node:path';
+
+import { Participant, fail, loadChromium, source, startServe, workDir } from './browser_driver.mjs';
+
+const out = process.argv[2] || join(source, 'docs', 'images');
+const browser = await loadChromium();
+for (const [scale, dir] of [[1, out], [1.5, join(source, 'build', 'web-shots-150')]]) {
+  mkdirSync(dir, { recursive: true });
+  const work = workDir();
+  const serve = await startServe(work, join(source, 'protocols', 'demo.yaml'), 1, 'demo');
+  const context = await browser.newContext({ viewport: { width: 1024, height: 600 }, deviceScaleFactor: scale });
+  const page = await context.newPage();
+  const p = new Participant(page);
+  await page.goto(serve.links[0]);
+  const shot = new Set();
+  for (let screens = 0; screens < 400; ++screens) {
+    const s = await p.nextScreen();
+    if (s.kind === 'finished') break;
+    if (s.kind === 'error') fail(`the page shows an error: ${s.text}`);
+    if (s.kind === 'message') { await p.next(); continue; }
+    if (!shot.has(s.type) && ['mushra', 'bs1116', 'ab', 'adjust'].includes(s.type)) {
+      shot.add(s.type);
+      await page.screenshot({ path: join(dir, `web-${s.type}.png`) });
+    }
+    await p.answer(s);
+    await p.next();
+  }
+  const x = await context.newPage();
+  await x.goto(serve.experimenter);
+  await x.waitForSelector('#participants tr[data-participant="web-001"]');
+  await x.screenshot({ path: join(dir, 'web-experimenter.png') });
+  await context.close();
+  await serve.stop();
+  console.log(`${dir}: ${[...shot].map((t) => `web-${t}.png`).join(' ')} web-experimenter.png`);
+}
+await browser.close();
