@@ -34,6 +34,8 @@ build/bin/modalstudy export "$study/results.sqlite" -o "$study/export"
 echo "== MUSHRA summary (hidden reference 'full', anchors 'full~lp3500' and 'full~lp7000')"
 build/bin/modalstudy stats mushra "$study/export/mushra.csv" --reference full \
   --anchor full~lp3500 --anchor full~lp7000 --plot "$study/mushra.png"
+echo "== BS.1116: the pruned plate against the full one (difference grades)"
+build/bin/modalstudy stats bs1116 "$study/export/bs1116.csv"
 echo "== identification: confusion matrix"
 build/bin/modalstudy stats confusion "$study/export/identify.csv" --truth stimulus --response response \
   --plot "$study/confusion.png"

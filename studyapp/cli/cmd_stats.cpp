@@ -1,4 +1,4 @@
-// modalstudy stats anova|ttest|confusion|mushra|ab|staircase|limits|mds|magnitude ...: statistics of
+// modalstudy stats anova|ttest|confusion|mushra|bs1116|ab|staircase|limits|mds|magnitude ...: statistics of
 // perceptual studies from tidy CSV files (one row per response). Each prints a table, or one JSON
 // object with --json; each subcommand is in its own cmd_stats_<name>.cpp.
 #include "studyapp/cli/commands.hpp"
@@ -13,6 +13,7 @@ void register_stats(CLI::App& app) {
   register_stats_ttest(*group);
   register_stats_confusion(*group);
   register_stats_mushra(*group);
+  register_stats_bs1116(*group);
   register_stats_ab(*group);
   register_stats_staircase(*group);
   register_stats_limits(*group);

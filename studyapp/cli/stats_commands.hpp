@@ -8,6 +8,7 @@ void register_stats_anova(CLI::App& group);
 void register_stats_ttest(CLI::App& group);
 void register_stats_confusion(CLI::App& group);
 void register_stats_mushra(CLI::App& group);
+void register_stats_bs1116(CLI::App& group);
 void register_stats_ab(CLI::App& group);
 void register_stats_staircase(CLI::App& group);
 void register_stats_limits(CLI::App& group);

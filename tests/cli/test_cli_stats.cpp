@@ -297,6 +297,28 @@ TEST(CliStatsMushra, JsonEqualsRGolden) {
   EXPECT_EQ(s["n_included"], 10);
 }
 
+TEST(CliStatsBs1116, JsonEqualsSciPyGoldenAndTextNamesTheScale) {
+  test::TempDir dir;
+  const auto r = test::run_cli("stats bs1116 " + kData + "bs1116/grades.csv --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const TidyCsv golden = TidyCsv::read(kData + "bs1116/summary_golden.csv");
+  ASSERT_EQ(j["conditions"].size(), golden.rows());
+  for (std::size_t i = 0; i < golden.rows(); ++i) {
+    EXPECT_EQ(j["conditions"][i]["condition"], golden.cell(i, 0));
+    expect_rel(j["conditions"][i]["mean_diffgrade"].get<double>(), golden.number(i, 2), golden.cell(i, 0));
+    expect_rel(j["conditions"][i]["ci_low"].get<double>(), golden.number(i, 4), golden.cell(i, 0));
+  }
+  EXPECT_EQ(j["assessors"].size(), 8u);
+  const auto text = test::run_cli("stats bs1116 " + kData + "bs1116/grades.csv", dir);
+  EXPECT_EQ(text.exit_code, 0);
+  EXPECT_NE(text.out.find("condition - hidden reference"), std::string::npos) << text.out;
+  EXPECT_NE(text.err.find("averaged per condition"), std::string::npos) << text.err;
+  const auto bad = test::run_cli("stats bs1116 " + dir.write("b.csv", "participant,condition,diffgrade\nL1,c,9\n"), dir);
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("b.csv:2:"), std::string::npos) << bad.err;
+}
+
 TEST(CliStatsMushra, BadInput) {
   test::TempDir dir;
   const std::string f = dir.write("m.csv", "participant,trial,condition,rating\nP1,t1,reference,100\nP1,t1,codec,101\n");
