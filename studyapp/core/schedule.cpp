@@ -102,15 +102,15 @@ std::vector<Trial> block_trials(const Block& b, std::size_t block_index, std::mt
       if (b.randomize) fisher_yates(t.stimuli, rng);
       out.push_back(t);
     }
-  } else if (const auto* t3 = std::get_if<Bs1116Block>(&b.body)) {
+  } else if (const auto* bs = std::get_if<Bs1116Block>(&b.body)) {
     // One trial per condition and repeat: A and B are the condition and the hidden reference, which
     // is which drawn per trial.
     for (int rep = 0; rep < b.repeats; ++rep)
-      for (const auto& c : t3->conditions) {
+      for (const auto& c : bs->conditions) {
         Trial t = proto;
         t.repeat = static_cast<std::size_t>(rep);
-        t.reference = t3->reference.name;
-        t.stimuli = {c.name, t3->reference.name};
+        t.reference = bs->reference.name;
+        t.stimuli = {c.name, bs->reference.name};
         if (b.randomize && uniform_below(rng, 2) == 1) std::swap(t.stimuli[0], t.stimuli[1]);
         out.push_back(t);
       }
@@ -143,10 +143,6 @@ std::vector<Trial> block_trials(const Block& b, std::size_t block_index, std::mt
   }
   return out;
 }
-
-}  // namespace
-
-namespace {
 
 // Each run of neighbouring blocks sharing a shuffle group takes an order of its own, drawn from a
 // stream of its own (a protocol without groups keeps every draw it had).

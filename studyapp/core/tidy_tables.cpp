@@ -226,8 +226,8 @@ std::map<std::string, std::string> tidy_tables(const std::vector<ResponseRow>& r
       if (ref_is_a == ref_is_b || !gc || !gr) {
         add({"NA", ref.empty() ? "NA" : ref, "NA", "NA", "NA", "NA"}, "");
       } else {
-        add({condition, ref, ref_is_a ? "A" : "B", csv::number(*gc), csv::number(*gr), csv::number(std::round((*gc - *gr) * 1e6) / 1e6)},
-            condition);
+        const double diffgrade = std::round((*gc - *gr) * 1e6) / 1e6;  // grades differ in tenths
+        add({condition, ref, ref_is_a ? "A" : "B", csv::number(*gc), csv::number(*gr), csv::number(diffgrade)}, condition);
       }
     } else if (const auto* questionnaire = std::get_if<QuestionnaireAnswer>(&answer)) {
       for (const auto& [q, text] : questionnaire->answers) add({q, text}, "");
