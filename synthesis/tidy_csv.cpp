@@ -57,6 +57,15 @@ bool TidyCsv::has_column(const std::string& name) const {
   return false;
 }
 
+std::size_t TidyCsv::first_column(const std::vector<std::string>& names) const {
+  for (const auto& n : names)
+    if (has_column(n)) return column(n);
+  std::string wanted, have;
+  for (const auto& n : names) wanted += (wanted.empty() ? "'" : " or '") + n + "'";
+  for (const auto& h : header_) have += (have.empty() ? "" : ", ") + h;
+  throw InputError(SourceLocation{file_, header_line_, 1}, "missing column " + wanted + " (columns are: " + have + ")");
+}
+
 std::size_t TidyCsv::column(const std::string& name) const {
   for (std::size_t c = 0; c < header_.size(); ++c)
     if (header_[c] == name) return c;

@@ -28,6 +28,9 @@ class TidyCsv {
   // Index of a named column; InputError at the header line listing the columns there are.
   std::size_t column(const std::string& name) const;
   bool has_column(const std::string& name) const;
+  // Index of the first of `names` the table has (the same column under another tool's name);
+  // InputError at the header line naming them all otherwise.
+  std::size_t first_column(const std::vector<std::string>& names) const;
 
   const std::string& cell(std::size_t row, std::size_t col) const { return cells_[row][col]; }
   // The cell as a finite number; InputError at the cell's FILE:LINE:COLUMN otherwise.

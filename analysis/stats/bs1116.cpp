@@ -17,13 +17,11 @@ Bs1116Assessor screen(const std::string& subject, const std::vector<double>& d) 
   Bs1116Assessor a;
   a.subject = subject;
   a.trials = d.size();
-  double sum = 0;
-  for (double x : d) sum += x, a.positive += x > 0;
-  a.mean = sum / double(d.size());
+  for (double x : d) a.positive += x > 0;
+  const MushraStat s = describe(subject, d, 0.95);
+  a.mean = s.mean;
   if (d.size() < 2) return a;
-  double ss = 0;
-  for (double x : d) ss += (x - a.mean) * (x - a.mean);
-  const double se = std::sqrt(ss / double(d.size() - 1) / double(d.size()));
+  const double se = s.sd / std::sqrt(double(d.size()));
   if (!(se > 0)) return a;  // every grade equal: t is undefined
   a.t = a.mean / se;
   a.p_less = boost::math::cdf(boost::math::students_t(double(d.size() - 1)), *a.t);
@@ -50,9 +48,7 @@ Bs1116Result bs1116_analyse(const std::vector<Bs1116Grade>& grades, double conf_
     for (const std::string& s : subjects) {
       const auto it = cell.find({c, s});
       if (it == cell.end()) continue;
-      double sum = 0;
-      for (double x : it->second) sum += x;
-      means.push_back(sum / double(it->second.size()));
+      means.push_back(describe(s, it->second, conf_level).mean);
       out.averaged += it->second.size() > 1;
     }
     MushraStat stat = describe(c, means, conf_level);
@@ -64,16 +60,10 @@ Bs1116Result bs1116_analyse(const std::vector<Bs1116Grade>& grades, double conf_
 
 std::vector<Bs1116Grade> bs1116_from_table(const TidyCsv& table) {
   const bool tidy = table.has_column("diffgrade");
-  const auto col = [&](const std::vector<std::string>& names) {
-    for (const auto& n : names)
-      if (table.has_column(n)) return table.column(n);
-    throw InputError(SourceLocation{table.file(), 1, 1},
-                     "missing column '" + names.front() + "' (a bs1116.csv from modalstudy export or webMUSHRA)");
-  };
-  const std::size_t cs = col({"participant", "session_uuid"});
-  const std::size_t cc = col({"condition", "rating_non_reference"});
-  const std::size_t cd = tidy ? table.column("diffgrade") : col({"rating_non_reference_score"});
-  const std::size_t cr = tidy ? cd : col({"rating_reference_score"});
+  const std::size_t cs = table.first_column({"participant", "session_uuid"});
+  const std::size_t cc = table.first_column({"condition", "rating_non_reference"});
+  const std::size_t cd = table.column(tidy ? "diffgrade" : "rating_non_reference_score");
+  const std::size_t cr = tidy ? cd : table.column("rating_reference_score");
   if (table.rows() == 0) throw InputError(SourceLocation{table.file(), 0, 0}, "no data rows");
   std::vector<Bs1116Grade> out;
   for (std::size_t r = 0; r < table.rows(); ++r) {

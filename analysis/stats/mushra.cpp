@@ -109,12 +109,7 @@ namespace {
 
 // The first of `candidates` the table has, or the explicit choice when given.
 std::size_t pick_column(const TidyCsv& table, const std::string& chosen, const std::vector<std::string>& candidates) {
-  if (!chosen.empty()) return table.column(chosen);
-  for (const auto& c : candidates)
-    if (table.has_column(c)) return table.column(c);
-  std::string names;
-  for (const auto& c : candidates) names += (names.empty() ? "'" : " or '") + c + "'";
-  throw InputError(SourceLocation{table.file(), 1, 1}, "missing column " + names);
+  return chosen.empty() ? table.first_column(candidates) : table.column(chosen);
 }
 
 }  // namespace

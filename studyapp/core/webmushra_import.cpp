@@ -339,14 +339,7 @@ class Importer {
     const bool a35 = is_true(n["createAnchor35"]), a70 = is_true(n["createAnchor70"]);
     if (a35 && a70) b["anchors"] = "auto";
     else if (!a35 && !a70) b["anchors"] = "none";
-    else {
-      const std::string anchor = ref + (a35 ? "_lp3500" : "_lp7000");
-      YAML::Node s;
-      s["derive"] = ref;
-      s["lowpass_hz"] = a35 ? 3500 : 7000;
-      stimuli_[anchor] = flow(s);
-      b["anchors"] = names({anchor});
-    }
+    else b["anchors"] = names({lowpassed(ref, a35 ? 3500 : 7000)});
     if (n["randomize"] && !is_true(n["randomize"])) b["randomize"] = false;
     if (is_true(n["showConditionNames"]))
       note(n["showConditionNames"], p + ".showConditionNames", "not carried over: conditions stay blind (letters)");
@@ -358,6 +351,16 @@ class Importer {
     blocks_.push_back(b);
   }
 
+  // webMUSHRA's anchor: the reference low-passed at `hz`, a derived stimulus named REF_lpHZ.
+  std::string lowpassed(const std::string& ref, int hz) {
+    const std::string anchor = ref + "_lp" + std::to_string(hz);
+    YAML::Node s;
+    s["derive"] = ref;
+    s["lowpass_hz"] = hz;
+    stimuli_[anchor] = flow(s);
+    return anchor;
+  }
+
   // BS.1116: each condition (and each anchor webMUSHRA would create, as a low-passed reference)
   // against the open and the hidden reference.
   void bs1116(const YAML::Node& n, const std::string& p) {
@@ -366,15 +369,8 @@ class Importer {
     const std::string ref = reference(n, p, id);
     b["reference"] = ref;
     std::vector<std::string> graded = conditions(n, p, id);
-    for (const auto& [key, hz] : {std::pair{"createAnchor35", 3500}, {"createAnchor70", 7000}}) {
-      if (!is_true(n[key])) continue;
-      const std::string anchor = ref + "_lp" + std::to_string(hz);
-      YAML::Node s;
-      s["derive"] = ref;
-      s["lowpass_hz"] = hz;
-      stimuli_[anchor] = flow(s);
-      graded.push_back(anchor);
-    }
+    for (const auto& [key, hz] : {std::pair{"createAnchor35", 3500}, {"createAnchor70", 7000}})
+      if (is_true(n[key])) graded.push_back(lowpassed(ref, hz));
     b["conditions"] = names(graded);
     prompt(b, n, p);
     blocks_.push_back(b);

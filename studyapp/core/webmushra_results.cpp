@@ -18,26 +18,22 @@ namespace ms {
 
 namespace {
 
-// The name webMUSHRA gives a MUSHRA stimulus: "reference", "anchor35", "anchor70", else its own.
-std::string mushra_stimulus(const Protocol* p, const MushraBlock* block, const std::string& name) {
-  if (!block || !block->reference) return name;
-  if (name == block->reference->name) return "reference";
+// The name webMUSHRA gives a graded stimulus: "anchor35", "anchor70" for the 3.5 / 7 kHz low-pass of
+// the reference, else its own.
+std::string anchor_or_own(const Protocol* p, const std::string& reference, const std::string& name) {
   const StimulusSource* s = p ? p->find_stimulus(name) : nullptr;
-  if (s && s->kind == StimulusKind::derived && s->derive_from.name == block->reference->name) {
+  if (s && s->kind == StimulusKind::derived && s->derive_from.name == reference) {
     if (s->lowpass_hz == 3500) return "anchor35";
     if (s->lowpass_hz == 7000) return "anchor70";
   }
   return name;
 }
 
-// The name webMUSHRA gives a BS.1116 condition: "anchor35", "anchor70" for the low-passed reference.
-std::string bs1116_condition(const Protocol* p, const Bs1116Block& block, const std::string& name) {
-  const StimulusSource* s = p ? p->find_stimulus(name) : nullptr;
-  if (s && s->kind == StimulusKind::derived && s->derive_from.name == block.reference.name) {
-    if (s->lowpass_hz == 3500) return "anchor35";
-    if (s->lowpass_hz == 7000) return "anchor70";
-  }
-  return name;
+// The name webMUSHRA gives a MUSHRA stimulus: "reference", "anchor35", "anchor70", else its own.
+std::string mushra_stimulus(const Protocol* p, const MushraBlock* block, const std::string& name) {
+  if (!block || !block->reference) return name;
+  if (name == block->reference->name) return "reference";
+  return anchor_or_own(p, block->reference->name, name);
 }
 
 std::string milliseconds(double ms) { return std::to_string(std::llround(ms)); }
@@ -126,7 +122,7 @@ std::map<std::string, std::string> webmushra_tables(const std::vector<ResponseRo
       const std::string condition = at(0) == tb.reference.name ? at(1) : at(0);
       const auto gr = bs->grades.find(tb.reference.name), gc = bs->grades.find(condition);
       if (gr == bs->grades.end() || gc == bs->grades.end()) continue;
-      add("bs1116.csv", {"reference", bs1116_condition(protocol, tb, condition), csv::number(gr->second),
+      add("bs1116.csv", {"reference", anchor_or_own(protocol, tb.reference.name, condition), csv::number(gr->second),
                          csv::number(gc->second), milliseconds(r.rt_ms), ""});
     } else if (const auto* rating = std::get_if<RatingAnswer>(&answer); rating && rating->points.size() == 1) {
       add("lss.csv", {std::to_string(rating->points.begin()->second), at(0), milliseconds(r.rt_ms)});
