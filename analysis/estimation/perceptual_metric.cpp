@@ -122,12 +122,7 @@ PerceptualScores PerceptualReference::compare(const std::vector<float>& y, const
 }
 
 PerceptualScores PerceptualReference::compare(const std::vector<float>& y, const std::vector<Mode>& modes) const {
-  PerceptualScores s;
-  s.psycho = psycho(y);
-  const auto other = loudness_weighted_features(modes, imager_, db_spl_at_unit_power_, sone_.frames);
-  s.match = match_ratio_product(features_, other, options_.match);
-  s.hybrid = hybrid_metric(s.psycho, s.match);
-  return s;
+  return compare(y, modes, 0.0);  // no noise added: the loudness image of y itself
 }
 
 }  // namespace ms
