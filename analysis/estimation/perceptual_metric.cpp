@@ -58,6 +58,11 @@ std::vector<FeaturePoint> loudness_weighted_features(const std::vector<Mode>& mo
   const double hop_s = double(imager.hop()) / fs;
   std::vector<FeaturePoint> points;
   points.reserve(modes.size());
+  // One contour per band, not per mode: a plate's candidate has hundreds of modes in a few dozen bands.
+  std::vector<ToneLoudness> tone_of_band;
+  tone_of_band.reserve(imager.bands());
+  for (std::size_t b = 0; b < imager.bands(); ++b)
+    tone_of_band.emplace_back(iso226_parameters(imager.band_centre_hz(b)), db_spl_at_unit_power);
   for (const Mode& m : modes) {
     FeaturePoint p{m.freq_hz, m.decay_per_s, 0.0};
     const std::size_t band = imager.band_of_hz(m.freq_hz);
@@ -65,7 +70,7 @@ std::vector<FeaturePoint> loudness_weighted_features(const std::vector<Mode>& mo
       // The first frame's mean square: the Hann-weighted mean of amp^2/2 e^{-2 d t} over it.
       const double first = 0.5 * m.amp * m.amp * hann_squared_decay_sum(w, 2.0 * m.decay_per_s / fs) / w2;
       const double per_frame = std::exp(-2.0 * m.decay_per_s * hop_s);
-      const ToneLoudness tone(iso226_parameters(imager.band_centre_hz(band)), db_spl_at_unit_power);
+      const ToneLoudness& tone = tone_of_band[band];
       double mean_sq = first, sum = 0.0;
       for (std::size_t f = 0; f < frames; ++f, mean_sq *= per_frame) {
         const double s = tone.sone(mean_sq);

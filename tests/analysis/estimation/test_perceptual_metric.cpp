@@ -277,6 +277,30 @@ TEST(FeatureMatch, MatchRatiosOnHandMadeSets) {
   EXPECT_DOUBLE_EQ(match_ratio_product(ref, ref).product, -1.0);
 }
 
+TEST(FeatureMatch, SetRatiosAreEq23OverPointToSetMatchesOnCrowdedSets) {
+  // Points close enough that most pairs score (within 1 Bark and 1-10 ms of duration), some without a
+  // positive decay, some without weight: the set ratios are Eq. 23 summed from point_to_set_match.
+  std::mt19937_64 g(17);
+  std::uniform_real_distribution<double> bark(7.0, 8.0), decay(-2.0, 40.0), weight(-0.5, 2.0);
+  auto points = [&](std::size_t n) {
+    std::vector<FeaturePoint> out(n);
+    for (FeaturePoint& p : out) p = {600.0 * std::sinh(bark(g) / 6.0), decay(g), std::max(weight(g), 0.0)};
+    return out;
+  };
+  const std::vector<FeaturePoint> ref = points(40), est = points(300);
+  auto eq23 = [](const std::vector<FeaturePoint>& a, const std::vector<FeaturePoint>& b) {
+    double num = 0.0, den = 0.0;
+    for (const FeaturePoint& p : a)
+      if (p.weight > 0.0) num += p.weight * point_to_set_match(p, b), den += p.weight;
+    return num / den;
+  };
+  const MatchRatios r = match_ratio_product(ref, est);
+  EXPECT_GT(r.reference, 0.1);
+  EXPECT_DOUBLE_EQ(r.reference, eq23(ref, est));
+  EXPECT_DOUBLE_EQ(r.estimate, eq23(est, ref));
+  EXPECT_DOUBLE_EQ(set_match_ratio(est, ref), eq23(est, ref));
+}
+
 // --- Loudness weights and Pi_hybrid ----------------------------------------------------------------
 
 TEST(HybridMetric, ModeWeightIsItsLoudnessImageSum) {
