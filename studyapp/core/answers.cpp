@@ -94,6 +94,11 @@ void to_json(json& j, const StaircaseAnswer& a) {
 }
 void to_json(json& j, const QuestionnaireAnswer& a) { j = a.answers; }
 void to_json(json& j, const Bs1116Answer& a) { j = a.grades; }
+void to_json(json& j, const LimitsAnswer& a) {
+  j = json{{"parameter", a.parameter}, {"levels", a.levels}, {"responses", json::array()}};
+  for (bool d : a.different) j["responses"].push_back(d ? "different" : "same");
+  j["threshold"] = a.threshold ? json(*a.threshold) : json(nullptr);
+}
 void to_json(json& j, const Answer& a) {
   std::visit([&](const auto& x) { to_json(j, x); }, a);
 }
@@ -165,6 +170,27 @@ void from_json(const json& j, StaircaseAnswer& a) {
   }
   if (!j["threshold"].is_null()) a.threshold = j["threshold"].get<double>();
 }
+void from_json(const json& j, LimitsAnswer& a) {
+  if (!j.is_object() || !j.contains("levels") || !j["levels"].is_array() || !j.contains("responses") ||
+      !j["responses"].is_array() || !j.contains("parameter") || !j["parameter"].is_string() ||
+      !j.contains("threshold") || !(j["threshold"].is_null() || is_finite_number(j["threshold"])))
+    throw AnswerError("expected {\"parameter\":key,\"levels\":[...],\"responses\":[...],\"threshold\":...}");
+  if (j["levels"].size() != j["responses"].size())
+    throw AnswerError("a series has one response per level: " + std::to_string(j["levels"].size()) + " levels, " +
+                      std::to_string(j["responses"].size()) + " responses");
+  a = LimitsAnswer{};
+  a.parameter = j["parameter"].get<std::string>();
+  for (const json& level : j["levels"]) {
+    if (!is_finite_number(level)) throw AnswerError("a series level must be a number, got " + level.dump());
+    if (!a.levels.empty() && !(level.get<double>() < a.levels.back()))
+      throw AnswerError("a descending series' levels must fall, got " + level.dump() + " after " + json(a.levels.back()).dump());
+    a.levels.push_back(level.get<double>());
+  }
+  for (const json& r : j["responses"]) a.different.push_back(one_of(r, {"same", "different"}) == "different");
+  for (std::size_t i = 0; i + 1 < a.different.size(); ++i)
+    if (a.different[i]) throw AnswerError("a series ends at its first \"different\" (trial " + std::to_string(i + 1) + ")");
+  if (!j["threshold"].is_null()) a.threshold = j["threshold"].get<double>();
+}
 void from_json(const json& j, QuestionnaireAnswer& a) {
   a.answers = object_of<std::string>(j, "text (or one of the question's options)", [](const json& x) {
     return x.is_string() ? std::optional(x.get<std::string>()) : std::nullopt;
@@ -191,6 +217,7 @@ Answer read_stored_answer(const std::string& block_type, const json& v) {
   if (block_type == "staircase") return get_as<StaircaseAnswer>(v);
   if (block_type == "questionnaire") return get_as<QuestionnaireAnswer>(v);
   if (block_type == "bs1116") return get_as<Bs1116Answer>(v);
+  if (block_type == "limits") return get_as<LimitsAnswer>(v);
   throw AnswerError("no answer format for block type '" + block_type + "'");
 }
 
@@ -241,6 +268,13 @@ Answer read_answer(const Block& block, const Trial& trial, const json& v) {
     }
     case BlockType::staircase:
       return get_as<StaircaseAnswer>(v);
+    case BlockType::limits: {
+      const auto& l = std::get<LimitsBlock>(block.body);
+      auto a = get_as<LimitsAnswer>(v);
+      if (a.parameter != l.parameter) throw AnswerError("the series varies '" + a.parameter + "', the block '" + l.parameter + "'");
+      if (a.levels.empty()) throw AnswerError("a series has at least one trial");
+      return a;
+    }
     case BlockType::questionnaire: {
       const auto& q = std::get<QuestionnaireBlock>(block.body);
       const auto a = get_as<QuestionnaireAnswer>(v);

@@ -11,6 +11,8 @@
 //   adjust         {"<key>": value within the slider's range, ...} for every slider
 //   staircase      {"parameter": key, "levels": [...], "correct": [...], "chosen": ["A"|"B", ...],
 //                  "threshold": number|null}; answers stored before the choice was kept have no "chosen"
+//   limits         {"parameter": key, "levels": [...], "responses": ["same"|"different", ...],
+//                  "threshold": number|null}: one descending series, levels falling
 //   questionnaire  {"<question id>": "text or option", ...}
 //   bs1116         {"<stimulus>": 1.0..5.0, ...} for A and B (the hidden reference under its own name)
 // The views, the simulated listener and the session write answers through these types; the export, the
@@ -58,6 +60,14 @@ struct StaircaseAnswer {
   std::vector<AbInterval> chosen;  // one per step, or empty (stored before choices were kept)
   std::optional<double> threshold;
 };
+// A whole descending series of the method of limits: per trial the level presented and whether the
+// listener heard a change, and the threshold (the last "same" level before the first "different").
+struct LimitsAnswer {
+  std::string parameter;
+  std::vector<double> levels;
+  std::vector<bool> different;
+  std::optional<double> threshold;
+};
 struct QuestionnaireAnswer { std::map<std::string, std::string> answers; };  // question id -> text
 // BS.1116 impairment grades, 5.0 imperceptible ... 1.0 very annoying.
 struct Bs1116Answer { std::map<std::string, double> grades; };  // stimulus -> 1.0..5.0
@@ -65,7 +75,7 @@ inline constexpr double kBs1116GradeMin = 1.0, kBs1116GradeMax = 5.0;
 
 using Answer = std::variant<InstructionsAnswer, SameDifferentAnswer, ChoiceAnswer, BipolarAnswer, MushraAnswer,
                             MagnitudeAnswer, IdentifyAnswer, RatingAnswer, AdjustAnswer, StaircaseAnswer,
-                            QuestionnaireAnswer, Bs1116Answer>;
+                            QuestionnaireAnswer, Bs1116Answer, LimitsAnswer>;
 
 // The stored JSON of each type (nlohmann's to_json/from_json; from_json throws AnswerError).
 void to_json(nlohmann::json& j, const InstructionsAnswer& a);
@@ -80,6 +90,7 @@ void to_json(nlohmann::json& j, const AdjustAnswer& a);
 void to_json(nlohmann::json& j, const StaircaseAnswer& a);
 void to_json(nlohmann::json& j, const QuestionnaireAnswer& a);
 void to_json(nlohmann::json& j, const Bs1116Answer& a);
+void to_json(nlohmann::json& j, const LimitsAnswer& a);
 void to_json(nlohmann::json& j, const Answer& a);
 void from_json(const nlohmann::json& j, InstructionsAnswer& a);
 void from_json(const nlohmann::json& j, SameDifferentAnswer& a);
@@ -93,6 +104,7 @@ void from_json(const nlohmann::json& j, AdjustAnswer& a);
 void from_json(const nlohmann::json& j, StaircaseAnswer& a);
 void from_json(const nlohmann::json& j, QuestionnaireAnswer& a);
 void from_json(const nlohmann::json& j, Bs1116Answer& a);
+void from_json(const nlohmann::json& j, LimitsAnswer& a);
 
 // A MUSHRA score as stored: a whole score (the slider's) as an integer, else the number.
 nlohmann::json mushra_score_json(double score);

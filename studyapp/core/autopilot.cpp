@@ -70,6 +70,15 @@ AutopilotSummary run_autopilot(const AutopilotOptions& o, const std::function<vo
       }
       continue;
     }
+    if (const auto* l = std::get_if<LimitsBlock>(&block.body)) {
+      const bool different = listener.limits_different(*l, session.limits().level());
+      for (const auto& name : trial.stimuli) session.log_event(EventKind::play, name, unix_now_ms());
+      if (!session.limits_step(different, 1500.0, unix_now_ms())) {  // the series ended: the trial is answered
+        ++summary.answered_now;
+        if (log) log("answered " + trial.block_id + " (descending series)");
+      }
+      continue;
+    }
     const SimulatedAnswer a = listener.answer(block, trial);
     for (const auto& name : trial.stimuli) session.log_event(EventKind::play, name, unix_now_ms());
     const nlohmann::json value = a.value;

@@ -8,7 +8,7 @@ namespace ms {
 const std::vector<std::string>& block_type_names() {
   static const std::vector<std::string> names{"instructions", "ab",       "mushra",    "magnitude",
                                               "identify",     "rating",   "adjust",    "staircase",
-                                              "questionnaire", "bs1116"};
+                                              "questionnaire", "bs1116",   "limits"};
   return names;
 }
 
@@ -60,6 +60,10 @@ std::vector<StimulusRef> Block::referenced() const {
   if (const auto* s = std::get_if<StaircaseBlock>(&body)) {
     out.push_back(s->stimulus);
     if (s->reference) out.push_back(*s->reference);
+  }
+  if (const auto* l = std::get_if<LimitsBlock>(&body)) {
+    out.push_back(l->stimulus);
+    if (l->reference) out.push_back(*l->reference);
   }
   return out;
 }

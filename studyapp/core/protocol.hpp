@@ -41,7 +41,7 @@ struct StimulusSource {
 };
 
 enum class BlockType { instructions, ab, mushra, magnitude, identify, rating, adjust, staircase,
-                       questionnaire, bs1116, unknown };
+                       questionnaire, bs1116, limits, unknown };
 const std::vector<std::string>& block_type_names();  // in enum order, without "unknown"
 std::string to_string(BlockType t);
 
@@ -108,6 +108,19 @@ struct StaircaseBlock {
   int down = 2, up = 1;
   int reversals = 8;
 };
+// Descending method of limits (van den Doel et al. 2002, Exp. 1): each series starts at `start` and
+// lowers `parameter` by |step| per trial; every trial plays the reference, then the stimulus at the
+// series' level, and the listener answers "same" or "different". The series ends at the first
+// "different" or after the trial at `floor`; `repeats` series per block.
+struct LimitsBlock {
+  StimulusRef stimulus;
+  std::optional<StimulusRef> reference;  // default: `stimulus` as defined (without the level)
+  std::string parameter;                 // dotted parameter-set key, e.g. prune.threshold_db
+  SourceLocation parameter_where;
+  double start = 0.0, step = -1.0;       // step < 0: the series descends
+  std::optional<double> floor;
+  SourceLocation floor_where;
+};
 struct Question {
   std::string id, text;
   std::vector<std::string> options;  // empty: free text
@@ -123,7 +136,7 @@ struct Bs1116Block {
 
 using BlockBody = std::variant<std::monostate, InstructionsBlock, AbBlock, MushraBlock, MagnitudeBlock,
                                IdentifyBlock, RatingBlock, AdjustBlock, StaircaseBlock, QuestionnaireBlock,
-                               Bs1116Block>;
+                               Bs1116Block, LimitsBlock>;
 
 struct Block {
   BlockType type = BlockType::unknown;

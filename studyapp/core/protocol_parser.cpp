@@ -285,6 +285,25 @@ StaircaseBlock parse_staircase(const YamlReader& r, const YAML::Node& n, const s
   return s;
 }
 
+LimitsBlock parse_limits(const YamlReader& r, const YAML::Node& n, const std::string& p, const Block& b) {
+  r.check_keys(n, p, {"type", "id", "randomize", "training", "shuffle", "break_after", "repeats", "stimulus",
+                      "reference", "parameter", "start", "step", "floor", "listen_all", "prompt"});
+  LimitsBlock l;
+  l.stimulus = ref(r, required(r, n, p, b, "stimulus"), p + ".stimulus");
+  if (n["reference"]) l.reference = ref(r, n["reference"], p + ".reference");
+  l.parameter = r.text(required(r, n, p, b, "parameter"), p + ".parameter");
+  l.parameter_where = r.where(n["parameter"], p + ".parameter");
+  l.start = r.number(required(r, n, p, b, "start"), p + ".start");
+  l.step = r.number(required(r, n, p, b, "step"), p + ".step");
+  if (!(l.step < 0.0)) r.fail(n["step"], p + ".step", "a descending series needs a negative step (e.g. -1), got " + n["step"].Scalar());
+  if (n["floor"]) {
+    l.floor = r.number(n["floor"], p + ".floor");
+    l.floor_where = r.where(n["floor"], p + ".floor");
+    if (!(*l.floor < l.start)) r.fail(n["floor"], p + ".floor", "must lie below start (the series descends)");
+  }
+  return l;
+}
+
 QuestionnaireBlock parse_questionnaire(const YamlReader& r, const YAML::Node& n, const std::string& p) {
   r.check_keys(n, p, {"type", "id", "randomize", "training", "shuffle", "break_after", "questions", "prompt"});
   QuestionnaireBlock q;
@@ -319,6 +338,7 @@ BlockBody parse_body(const YamlReader& r, const YAML::Node& n, const std::string
     case BlockType::staircase: return parse_staircase(r, n, p, b);
     case BlockType::questionnaire: return parse_questionnaire(r, n, p);
     case BlockType::bs1116: return parse_bs1116(r, n, p);
+    case BlockType::limits: return parse_limits(r, n, p, b);
     case BlockType::unknown: break;
   }
   return std::monostate{};

@@ -172,6 +172,13 @@ struct Checker {
         problems.push_back(at(s->stimulus.where, who + "stimulus '" + st->name + "' is not a parameter set"));
       setting(s->stimulus, s->parameter, s->start, s->parameter_where, who);
     }
+    if (const auto* l = std::get_if<LimitsBlock>(&b.body)) {
+      const auto* st = p.find_stimulus(l->stimulus.name);
+      if (st && st->kind != StimulusKind::paramset)
+        problems.push_back(at(l->stimulus.where, who + "stimulus '" + st->name + "' is not a parameter set"));
+      setting(l->stimulus, l->parameter, l->start, l->parameter_where, who);
+      if (l->floor) setting(l->stimulus, l->parameter, *l->floor, l->floor_where, who);
+    }
     if (const auto* q = std::get_if<QuestionnaireBlock>(&b.body); q && q->questions.empty()) empty("no questions");
   }
 

@@ -131,6 +131,10 @@ std::vector<Trial> block_trials(const Block& b, std::size_t block_index, std::mt
     // One trial per track; the track itself adapts at run time. Its stimuli: stimulus, reference.
     add_single_trials(out, proto, {s->stimulus}, b.repeats);
     for (auto& t : out) t.stimuli.push_back(s->reference ? s->reference->name : s->stimulus.name);
+  } else if (const auto* l = std::get_if<LimitsBlock>(&b.body)) {
+    // One trial per series (the block's repeats); the series descends at run time. Stimuli: stimulus, reference.
+    add_single_trials(out, proto, {l->stimulus}, b.repeats);
+    for (auto& t : out) t.stimuli.push_back(l->reference ? l->reference->name : l->stimulus.name);
   } else {
     out.push_back(proto);  // instructions, questionnaire: one screen
   }

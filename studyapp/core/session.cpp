@@ -91,6 +91,16 @@ Session::Session(const Protocol& protocol, const std::string& protocol_text, con
       }
     if (!all_chosen) track_chosen_.clear();
   }
+  if (!finished() && current().type == BlockType::limits) {
+    limits();  // an interrupted series continues after its committed steps
+    for (const auto& e : store_->events(session_, position_of(current())))
+      if (e.kind == EventKind::step) {
+        const auto d = nlohmann::json::parse(e.detail_json);
+        series_->record(d.at("response").get<SameDifferentAnswer>().different);
+        track_rt_ms_ += d.value("rt_ms", 0.0);
+        ++track_plays_;
+      }
+  }
 }
 
 Session::~Session() {
@@ -161,8 +171,33 @@ bool Session::staircase_step(AbInterval chosen, double rt_ms, std::int64_t now_m
   return correct;
 }
 
+DescendingSeries& Session::limits() {
+  const auto* l = std::get_if<LimitsBlock>(&current_block().body);
+  if (!l) throw std::logic_error("Session::limits: the current trial is not a method-of-limits series");
+  if (!series_) series_.emplace(l->start, l->step, l->floor);
+  return *series_;
+}
+
+bool Session::limits_step(bool different, double rt_ms, std::int64_t now_ms) {
+  DescendingSeries& series = limits();
+  const auto* l = std::get_if<LimitsBlock>(&current_block().body);
+  const nlohmann::json detail{{"step", series.levels().size()}, {"level", series.level()},
+                              {"response", SameDifferentAnswer{different}}, {"rt_ms", rt_ms}};
+  store_->record_event(session_, {position_of(current()), EventKind::step, l->stimulus.name, now_ms, detail.dump()});
+  series.record(different);
+  track_rt_ms_ += rt_ms;
+  ++track_plays_;
+  if (!series.finished()) return true;
+  const LimitsAnswer value{l->parameter, series.levels(), series.different(), series.threshold()};
+  const double rt = track_rt_ms_;
+  const int plays = track_plays_;
+  answer(value, rt, plays, now_ms);
+  return false;
+}
+
 void Session::advance() {
   track_.reset();
+  series_.reset();
   track_chosen_.clear();
   track_plays_ = 0;
   track_rt_ms_ = 0.0;

@@ -3,7 +3,8 @@
 // again resumes the unfinished session at its first unanswered trial with the same schedule.
 // Staircase trials run their track inside the trial: core draws which interval holds the comparison
 // and scores the listener's choice; each step is committed as a "step" event, so a track interrupted
-// by a crash continues where it stopped, with the same draws. While a Session object lives it holds the
+// by a crash continues where it stopped, with the same draws. Method-of-limits trials run one descending
+// series inside the trial the same way (each "same"/"different" a "step" event). While a Session object lives it holds the
 // session's lease (the process's LeaseKeeper renews it), so no other process can answer for the participant.
 #pragma once
 #include <cstdint>
@@ -18,6 +19,7 @@
 #include "studyapp/core/protocol.hpp"
 #include "studyapp/core/results_store.hpp"
 #include "studyapp/core/schedule.hpp"
+#include "studyapp/core/descending_series.hpp"
 #include "studyapp/core/staircase_track.hpp"
 
 namespace ms {
@@ -80,6 +82,13 @@ class Session {
   // choice was right.
   bool staircase_step(AbInterval chosen, double rt_ms, std::int64_t now_ms);
 
+  // Method-of-limits trials: the live series of the current trial (rebuilt from stored steps on resume).
+  DescendingSeries& limits();
+  // Commits the answer at the series' level as a step and, when the series ends (the first
+  // "different", the floor), answers the trial with the whole series and advances. Returns whether
+  // the series goes on in this trial.
+  bool limits_step(bool different, double rt_ms, std::int64_t now_ms);
+
   // Marks the session finished in the store (done automatically after the last answer).
   void finish(std::int64_t now_ms);
 
@@ -95,6 +104,7 @@ class Session {
   std::size_t current_ = 0;
   bool at_break_ = false;
   std::optional<StaircaseTrack> track_;
+  std::optional<DescendingSeries> series_;
   std::vector<AbInterval> track_chosen_;  // per step; empty when a resumed track's early steps lack it
   int track_plays_ = 0;
   double track_rt_ms_ = 0.0;

@@ -73,6 +73,14 @@ AbInterval SimulatedListener::staircase_choice(const StaircaseBlock& block, doub
   return told_apart ? other(comparison) : comparison;
 }
 
+bool SimulatedListener::limits_different(const LimitsBlock& block, double level) {
+  const std::vector<std::string> set{block.parameter + "=" + format_number(level)};
+  const PerceptualProfile& cmp =
+      profile(cache_.hash_with(block.stimulus.name, set), cache_.samples_with(block.stimulus.name, set));
+  const PerceptualProfile ref = profile(block.reference ? block.reference->name : block.stimulus.name);
+  return noisy(perceptual_distance_db(ref, cmp)) > 1.0;  // answer_ab's same/different criterion
+}
+
 double SimulatedListener::reaction_ms(double distance_db, UnitNormal& unit) {
   // 600 ms plus up to 1.5 s for the smallest distances.
   return 600.0 + 1500.0 * std::exp(-distance_db / 3.0) + 100.0 * std::abs(unit(rng_));
@@ -216,6 +224,7 @@ SimulatedAnswer SimulatedListener::answer(const Block& block, const Trial& trial
     case BlockType::questionnaire:
       return {questionnaire_answer(std::get<QuestionnaireBlock>(block.body)), 5000.0, 0};
     case BlockType::staircase:  // answered step by step through staircase_choice
+    case BlockType::limits:     // answered step by step through limits_different
     case BlockType::unknown:
       break;
   }

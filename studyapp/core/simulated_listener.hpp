@@ -32,6 +32,9 @@ class SimulatedListener {
   // One staircase step with the comparison at `level` in interval `comparison`: the interval the
   // listener names as the reference (the other one when the comparison is told apart).
   AbInterval staircase_choice(const StaircaseBlock& block, double level, AbInterval comparison);
+  // One method-of-limits trial with the comparison at `level`: does the listener hear a change from
+  // the reference? (the same rule as a same/different A/B trial)
+  bool limits_different(const LimitsBlock& block, double level);
   double distance_db(const std::string& a, const std::string& b);  // between named stimuli
 
  private:

@@ -49,6 +49,20 @@ std::vector<std::vector<std::string>> staircase_rows(const StaircaseAnswer& a, c
   return rows;
 }
 
+// One row per trial of a descending series, in presentation order (`stats limits --level level
+// --response response --track participant,block,trial` reads it as written). `censored`: the series
+// never heard a change, so its threshold is only an upper bound (its last level).
+std::vector<std::vector<std::string>> limits_rows(const LimitsAnswer& a, const std::string& stimulus,
+                                                  const std::string& reference) {
+  const bool censored = std::find(a.different.begin(), a.different.end(), true) == a.different.end();
+  std::vector<std::vector<std::string>> rows;
+  for (std::size_t i = 0; i < a.levels.size(); ++i)
+    rows.push_back({stimulus, reference, a.parameter, std::to_string(i), cell(a.levels[i]),
+                    a.different[i] ? "different" : "same", a.different[i] ? "1" : "0",
+                    a.threshold ? cell(*a.threshold) : "NA", censored ? "1" : "0"});
+  return rows;
+}
+
 // The answer in the written order: a bipolar score negated, a chosen letter exchanged, when swapped.
 std::string oriented_cell(const Answer& answer, bool swapped) {
   if (const auto* bipolar = std::get_if<BipolarAnswer>(&answer)) return std::to_string(swapped ? -bipolar->score : bipolar->score);
@@ -76,6 +90,7 @@ const std::map<std::string, std::vector<std::string>>& type_columns() {
       {"rating", {"stimulus", "attribute", "value"}},
       {"adjust", {"stimulus", "key", "value", "plays", "rt_ms"}},
       {"staircase", {"stimulus", "parameter", "step", "level", "next_level", "correct", "threshold"}},  // + chosen
+      {"limits", {"stimulus", "reference", "parameter", "step", "level", "response", "different", "threshold", "censored"}},
       {"questionnaire", {"question", "answer"}},
       {"bs1116", {"condition", "reference", "hidden_reference", "condition_grade", "reference_grade", "diffgrade"}}};
   return c;
@@ -212,6 +227,8 @@ std::map<std::string, std::string> tidy_tables(const std::vector<ResponseRow>& r
     } else if (const auto* track = std::get_if<StaircaseAnswer>(&answer)) {
       const auto* sb = block ? std::get_if<StaircaseBlock>(&block->body) : nullptr;
       for (std::vector<std::string>& row : staircase_rows(*track, sb, at(0), staircase_choices)) add(std::move(row), at(0));
+    } else if (const auto* series = std::get_if<LimitsAnswer>(&answer)) {
+      for (std::vector<std::string>& row : limits_rows(*series, at(0), at(1))) add(std::move(row), at(0));
     } else if (const auto* bs = std::get_if<Bs1116Answer>(&answer)) {
       // Which of A and B was the hidden reference comes from the block (the stored trial names both).
       const auto* tb = block ? std::get_if<Bs1116Block>(&block->body) : nullptr;

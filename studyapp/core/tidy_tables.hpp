@@ -1,6 +1,6 @@
 // Per-block-type tidy tables made from the stored responses, one row per observation, in the column
 // names the `modalstudy stats` commands read by default (mushra.csv: participant, trial, condition,
-// rating; identify.csv: stimulus, truth, response, correct; staircase.csv: one row per step; ...).
+// rating; identify.csv: stimulus, truth, response, correct; staircase.csv: one row per step; limits.csv: one row per trial of a series; ...).
 // The protocol of each study adds what the responses alone do not say: the identification truth,
 // the stimuli's design factors (one column each), the modulus of magnitude blocks and where a
 // staircase moved after its last answer.

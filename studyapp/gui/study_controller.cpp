@@ -212,6 +212,25 @@ StaircaseReply StudyController::staircase_step(AbInterval chosen) {
   return reply;
 }
 
+bool StudyController::limits_step(bool different) {
+  const std::size_t trial = session_->current_index();
+  try {
+    session_->limits_step(different, elapsed_ms(), now_ms());
+  } catch (const std::exception& e) {
+    emit error(QString::fromStdString(e.what()));
+    return true;
+  }
+  if (session_->current_index() == trial && !session_->finished()) {
+    played_.clear();
+    held_rt_ms_.reset();
+    trial_clock_.start();
+    return true;
+  }
+  if (!session_->finished() && session_->at_break()) emit breakReached();
+  else show_current();
+  return false;
+}
+
 void StudyController::continue_after_break() { show_current(); }
 
 }  // namespace ms::gui

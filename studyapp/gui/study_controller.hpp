@@ -95,6 +95,8 @@ class StudyController : public QObject {
   bool submit(const nlohmann::json& value);
   // Staircase: commits the interval chosen in one step (the session scores it).
   StaircaseReply staircase_step(AbInterval chosen);
+  // Method of limits: commits one "same"/"different" of the series; true while the series goes on.
+  bool limits_step(bool different);
   void continue_after_break();        // from the break page
 
  signals:

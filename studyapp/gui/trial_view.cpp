@@ -251,6 +251,7 @@ TrialView* make_trial_view(StudyController& c, QWidget* parent) {
     case BlockType::staircase: return make_staircase_view(c, parent);
     case BlockType::questionnaire: return make_questionnaire_view(c, parent);
     case BlockType::bs1116: return make_bs1116_view(c, parent);
+    case BlockType::limits: return make_limits_view(c, parent);
     case BlockType::unknown: break;
   }
   return make_instructions_view(c, parent);  // a validated protocol has no unknown blocks
@@ -282,6 +283,7 @@ QString task_title(const Block& block) {
     case BlockType::staircase: return "Spot the difference";
     case BlockType::questionnaire: return "A few questions";
     case BlockType::bs1116: return "Grade the difference";
+    case BlockType::limits: return "Do you hear a change?";
     case BlockType::unknown: break;
   }
   return "Listening test";

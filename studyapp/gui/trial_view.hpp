@@ -89,6 +89,7 @@ TrialView* make_identify_view(StudyController& c, QWidget* parent);
 TrialView* make_rating_view(StudyController& c, QWidget* parent);
 TrialView* make_adjust_view(StudyController& c, QWidget* parent);
 TrialView* make_staircase_view(StudyController& c, QWidget* parent);
+TrialView* make_limits_view(StudyController& c, QWidget* parent);
 TrialView* make_questionnaire_view(StudyController& c, QWidget* parent);
 
 // Names of a trial's stimuli as Sounds from the cache (already rendered by prepare(); empty buffers in

@@ -53,6 +53,10 @@ TrialInputs trial_inputs(const Block& block, const Trial& trial, const Presentat
     in.complete = stored == "A" || stored == "B";
     return in;
   }
+  if (block.type == BlockType::limits) {
+    in.complete = stored == "same" || stored == "different";
+    return in;
+  }
   in.why_incomplete = check_answer(block, trial, stored);
   in.complete = in.why_incomplete.empty();
   return in;

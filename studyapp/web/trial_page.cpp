@@ -73,6 +73,8 @@ nlohmann::json page_json(Session& session, const Presentation& p, StimulusCache&
     page["reversals"] = session.staircase().reversals();
     page["max_reversals"] = b->reversals;
   }
+  if (std::holds_alternative<LimitsBlock>(block.body))
+    page["choices"] = choices({{"same", "Same"}, {"different", "Different"}});
   if (const auto* b = std::get_if<QuestionnaireBlock>(&block.body)) {
     nlohmann::json questions = nlohmann::json::array();
     for (std::size_t i = 0; i < b->questions.size(); ++i)

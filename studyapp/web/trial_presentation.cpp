@@ -49,6 +49,16 @@ void present_staircase(Presentation& p, Session& session, const StaircaseBlock& 
   p.sounds[2].label = "B";
 }
 
+// The reference, then the stimulus at the series' level (the level is never sent).
+void present_limits(Presentation& p, Session& session, const LimitsBlock& block, StimulusCache& cache) {
+  DescendingSeries& series = session.limits();
+  p.step = series.levels().size();
+  const std::string level = override_text(block.parameter, series.level());
+  p.sounds.push_back(sound_of(cache, block.reference ? block.reference->name : block.stimulus.name, "Reference"));
+  p.sounds.push_back(sound_of(cache, block.stimulus.name, "Second sound", {level}));
+  p.sounds.back().name = block.stimulus.name + "@" + level;
+}
+
 }  // namespace
 
 std::string override_text(const std::string& key, double value) { return key + "=" + csv::number(value); }
@@ -121,6 +131,7 @@ Presentation present(Session& session, StimulusCache& cache) {
       break;
     }
     case BlockType::staircase: present_staircase(p, session, std::get<StaircaseBlock>(block.body), cache); break;
+    case BlockType::limits: present_limits(p, session, std::get<LimitsBlock>(block.body), cache); break;
     default: break;  // instructions, questionnaire: nothing to hear
   }
   p.page = page_json(session, p, cache);

@@ -64,16 +64,21 @@ TEST(ReplicationProtocols, EachValidatesWithNoProblem) {
   }
 }
 
-// van den Doel et al. 2002: a_v staircase from 20 dB in -1 dB steps against the unpruned model;
+// van den Doel et al. 2002: a descending a_v series (method of limits) from 20 dB in -1 dB steps against
+// the unpruned model, one per object and listener;
 // same/different token ladders; magnitude estimation of every pair of 11 tokens + the reference.
 TEST(ReplicationProtocols, VanDenDoel2002KeepsThePapersDesign) {
   const ms::Protocol p = load("vandendoel2002");
   for (const std::string object : {"vase", "bowl"}) {
-    const auto& s = std::get<ms::StaircaseBlock>(block(p, "av-" + object).body);
+    const ms::Block& b = block(p, "av-" + object);
+    const auto& s = std::get<ms::LimitsBlock>(b.body);
     EXPECT_EQ(s.parameter, "prune.threshold_db");
     EXPECT_DOUBLE_EQ(s.start, 20.0);
-    EXPECT_DOUBLE_EQ(s.step, -1.0);  // lower a_v prunes more: the easier direction
+    EXPECT_DOUBLE_EQ(s.step, -1.0);  // "reduced by 1dB for every pair"
     EXPECT_EQ(s.stimulus.name, object + "-av");
+    ASSERT_TRUE(s.reference.has_value());
+    EXPECT_EQ(s.reference->name, object + "-full");  // Y: all modes
+    EXPECT_EQ(b.repeats, 1);  // Table 1: one value per listener and object
   }
   const ms::Schedule schedule = ms::make_schedule(p, "P01");
   for (const std::string object : {"vase", "bowl"})

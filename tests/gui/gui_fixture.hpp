@@ -106,7 +106,7 @@ struct DriveLog {
   std::vector<double> resynth_ms;            // adjust: slider move -> new sound ready
   std::vector<std::string> listen_rule;      // trials whose Next was disabled until every sound was heard
   std::set<ms::BlockType> seen;
-  int trials = 0, breaks = 0, staircase_steps = 0;
+  int trials = 0, breaks = 0, staircase_steps = 0, limits_steps = 0;
   bool used_keys = false;                    // shortcuts (Enter, 1..n) took effect
 };
 
@@ -216,6 +216,19 @@ inline void answer_trial(ms::gui::MainWindow& w, DriveLog& log) {
         play_all();
         QTest::mouseClick(next, Qt::LeftButton);
         ++log.staircase_steps;
+      }
+      return;
+    case ms::BlockType::limits:
+      for (int step = 0; step < 100 && !moved_on(); ++step) {
+        auto* play0 = child<QPushButton>(view, "play-0");
+        wait_until([&] { return play0->isEnabled(); });
+        // "same" twice, then "different": a series of three pairs
+        const char* answer = step < 2 ? "choice-same" : "choice-different";
+        QTest::mouseClick(children_with_prefix<QAbstractButton>(view, answer)[0], Qt::LeftButton);
+        if (step == 0 && !next->isEnabled()) log.listen_rule.push_back("limits");
+        play_all();
+        QTest::mouseClick(next, Qt::LeftButton);
+        ++log.limits_steps;
       }
       return;
     case ms::BlockType::questionnaire:

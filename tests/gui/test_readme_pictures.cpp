@@ -54,9 +54,10 @@ TEST(ReadmePictures, EveryViewOnTheGivenScreen) {
     shot[type] = true;
     QWidget* v = win.trial_view();
     // A participant mid-trial: the first sounds heard, so the marks and hints show.
-    if (auto* p = v->findChild<QPushButton*>("play-0"); p && type != ms::BlockType::staircase && type != ms::BlockType::adjust)
+    if (auto* p = v->findChild<QPushButton*>("play-0"); p && type != ms::BlockType::staircase && type != ms::BlockType::limits &&
+        type != ms::BlockType::adjust)
       QTest::mouseClick(p, Qt::LeftButton);
-    if (type == ms::BlockType::adjust || type == ms::BlockType::staircase)
+    if (type == ms::BlockType::adjust || type == ms::BlockType::staircase || type == ms::BlockType::limits)
       wait_until([&] { auto* p = v->findChild<QPushButton*>("play-0"); return p && p->isEnabled(); });
     shoot(win, dir, ms::to_string(type));
   }));

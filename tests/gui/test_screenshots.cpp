@@ -82,6 +82,11 @@ void check_widgets(ms::BlockType type, ms::gui::MainWindow& w) {
       EXPECT_NE(v->findChild<QPushButton*>("play-sequence"), nullptr);
       EXPECT_EQ(count_prefix(v, "choice-"), 2u);
       break;
+    case ms::BlockType::limits:
+      EXPECT_NE(v->findChild<QPushButton*>("play-sequence"), nullptr);
+      EXPECT_EQ(count_prefix(v, "choice-"), 2u);  // same, different
+      EXPECT_EQ(count_prefix(v, "play-"), 3u);    // the sequence, the reference, the second sound
+      break;
     case ms::BlockType::questionnaire:
       EXPECT_EQ(count_prefix(v, "question-"), 1u);
       EXPECT_EQ(count_prefix(v, "option-headphones-"), 3u);
@@ -114,7 +119,7 @@ TEST(Screenshots, EveryViewRendersWithItsWidgets) {
     }
     if (shot[type]) return;
     shot[type] = true;
-    if (type == ms::BlockType::adjust || type == ms::BlockType::staircase)  // wait for the first render
+    if (type == ms::BlockType::adjust || type == ms::BlockType::staircase || type == ms::BlockType::limits)  // the first render
       wait_until([&] {
         auto* p = win.trial_view()->findChild<QPushButton*>("play-0");
         return type == ms::BlockType::adjust ? win.trial_view()->property("renders").toInt() >= 1 : p && p->isEnabled();

@@ -33,6 +33,7 @@ TEST(SessionDrive, WholeDemoSessionThroughTheViews) {
   EXPECT_EQ(static_cast<std::size_t>(log.trials), total);
   EXPECT_GE(log.breaks, 1);
   EXPECT_GT(log.staircase_steps, 2);
+  EXPECT_EQ(log.limits_steps, 3);  // "same", "same", "different": the series ends at the first change
   EXPECT_TRUE(log.used_keys) << "Enter did not act as Next";
   std::size_t gated = 0;  // every trial with sounds waits until every sound was heard (listen_all default)
   for (const ms::Trial& t : w.controller()->session().schedule().trials)

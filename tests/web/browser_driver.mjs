@@ -117,6 +117,10 @@ export class Participant {
         await this.hearAll();
         await page.locator('#view button.choice').first().click();
         break;
+      case 'limits':  // "different": the series ends at this pair
+        await this.hearAll();
+        await page.locator('#view button.choice').last().click();
+        break;
       case 'mushra': {
         await this.hearAll();
         const sliders = page.locator('#view input[type=range]');

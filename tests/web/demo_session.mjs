@@ -110,7 +110,7 @@ await browser.close();
 await serve.stop();
 
 if (!reloaded) fail('the session never reached the reload point');
-for (const t of ['instructions', 'ab', 'mushra', 'bs1116', 'magnitude', 'identify', 'rating', 'adjust', 'staircase', 'questionnaire'])
+for (const t of ['instructions', 'ab', 'mushra', 'bs1116', 'magnitude', 'identify', 'rating', 'adjust', 'staircase', 'limits', 'questionnaire'])
   if (!sawTypes.has(t)) fail(`no ${t} page was shown`);
 const exported = exportStore(serve.db, join(work, 'export'));
 if (exported.lines.length !== total) fail(`the store holds ${exported.lines.length} responses, the session had ${total} trials`);

@@ -4,10 +4,11 @@ import adjust from './adjust.js';
 import bs1116 from './bs1116.js';
 import identify from './identify.js';
 import instructions from './instructions.js';
+import limits from './limits.js';
 import magnitude from './magnitude.js';
 import mushra from './mushra.js';
 import questionnaire from './questionnaire.js';
 import rating from './rating.js';
 import staircase from './staircase.js';
 
-export const views = { ab, adjust, bs1116, identify, instructions, magnitude, mushra, questionnaire, rating, staircase };
+export const views = { ab, adjust, bs1116, identify, instructions, limits, magnitude, mushra, questionnaire, rating, staircase };
