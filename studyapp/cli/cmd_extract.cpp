@@ -1,7 +1,10 @@
 // modalstudy extract WAV... [--json] [-o FEATURES.csv [--errors]] [--channel N] [--thorough]
+//                            [--object-out OBJECT.yaml [--specific-modulus E/RHO] [--material ID]]
 // Modal features (freq_hz, decay_per_s, amp at the onset) of impact recordings; see
 // analysis/feature_extraction.hpp. Every file is checked before anything is written. --json adds every
-// mode's error bars (Cramer-Rao standard deviations, analysis/mode_precision.hpp).
+// mode's error bars (Cramer-Rao standard deviations, analysis/mode_precision.hpp). --object-out writes
+// one recording's modes as a parameter set with an `eigenvalues` object (measured_object.hpp): the
+// object `modalstudy estimate --object` needs when there is no model of the geometry.
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -10,12 +13,14 @@
 #include <iostream>
 
 #include "analysis/extraction/feature_extraction.hpp"
+#include "analysis/extraction/measured_object.hpp"
 #include "studyapp/cli/commands.hpp"
 #include "studyapp/cli/stats_output.hpp"
 #include "synthesis/atomic_file.hpp"
 #include "synthesis/audio_file.hpp"
 #include "synthesis/csv.hpp"
 #include "synthesis/input_error.hpp"
+#include "synthesis/paramset.hpp"
 
 namespace ms::cli {
 
@@ -25,6 +30,8 @@ void register_extract(CLI::App& app) {
     double attack_skip_ms = 20.0;  // noise at the attack the modes cannot explain; 0 turns it off
     std::vector<std::string> inputs;
     std::string output;
+    std::string object_out;
+    MeasuredObjectOptions object;
     int channel = -1;
     bool json = false;
     bool thorough = false;
@@ -57,8 +64,24 @@ void register_extract(CLI::App& app) {
   cmd->add_flag("--thorough", opt->thorough,
                 "Second start for crowded, heavily damped modes below 700 Hz (kept when the penalised fit "
                 "improves): a few % more modes for ~70 % more time");
+  CLI::Option* object_out =
+      cmd->add_option("--object-out", opt->object_out,
+                      "Write the (one) recording's modes as a parameter set with an eigenvalues object "
+                      "(lambda0 = omega^2 / E/rho, gains the amplitudes): a measured object for "
+                      "`estimate --object` when the geometry has no model");
+  cmd->add_option("--specific-modulus", opt->object.specific_modulus_m2_s2,
+                  "E/rho [m^2/s^2] the object's eigenvalues are written for (default: the material's)")
+      ->check(CLI::PositiveNumber)
+      ->needs(object_out);
+  cmd->add_option("--material", opt->object.material,
+                  "Library material the object set renders with (default ren2013/metal)")
+      ->needs(object_out);
   cmd->callback([opt] {
+    if (!opt->object_out.empty() && opt->inputs.size() != 1)
+      throw InputError(SourceLocation{"--object-out", 0, 0},
+                       "needs exactly one recording, not " + std::to_string(opt->inputs.size()));
     std::vector<std::pair<std::string, ExtractedFeatures>> results;
+    double duration_s = 0.0;
     for (const std::string& path : opt->inputs) {
       const Audio audio = read_audio(path);
       if (opt->channel >= audio.channels)
@@ -66,6 +89,7 @@ void register_extract(CLI::App& app) {
                                                          " but the file has " + std::to_string(audio.channels) +
                                                          " channel(s)");
       const std::vector<float> x = mono(audio, opt->channel);
+      duration_s = double(x.size()) / audio.sample_rate_hz;
       if (auto problem = recording_problem(x, audio.sample_rate_hz))
         throw InputError(SourceLocation{path, 0, 0}, *problem);
       ExtractOptions options;
@@ -75,6 +99,23 @@ void register_extract(CLI::App& app) {
       ExtractedFeatures f = extract_features(x, audio.sample_rate_hz, options);
       if (f.modes.empty()) throw InputError(SourceLocation{path, 0, 0}, "no modes found above the noise floor");
       results.emplace_back(std::filesystem::path(path).stem().string(), std::move(f));
+    }
+    std::string object_yaml;
+    if (!opt->object_out.empty()) {
+      const auto& [name, f] = results.front();
+      opt->object.description = "Measured object: the modes of " + opt->inputs.front() +
+                                " (modalstudy extract --object-out)";
+      try {
+        object_yaml = write_yaml(measured_object_recipe(f.modes, f.sample_rate_hz, duration_s, opt->object));
+      } catch (const std::invalid_argument& e) {
+        throw InputError(SourceLocation{"--material", 0, 0}, e.what());
+      }
+      try {  // the set must read and resolve before it is written
+        const std::filesystem::path dir = std::filesystem::path(opt->object_out).parent_path();
+        parse_paramset(object_yaml, opt->object_out, dir.empty() ? "." : dir.string());
+      } catch (const InputError& e) {
+        throw InputError(SourceLocation{opt->object_out, 0, 0}, e.problem());
+      }
     }
     if (!opt->output.empty()) {
       // 10 significant digits; empty where the data do not determine the value (an infinite bound).
@@ -99,6 +140,7 @@ void register_extract(CLI::App& app) {
         }
       write_file_atomically(opt->output, csv);
     }
+    if (!object_yaml.empty()) write_file_atomically(opt->object_out, object_yaml);
     if (opt->json) {
       nlohmann::json sounds = nlohmann::json::array();
       for (const auto& [name, f] : results) {

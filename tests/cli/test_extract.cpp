@@ -239,3 +239,61 @@ TEST_F(ExtractCli, OneBadFileOutOfManyWritesNothing) {
 }
 
 }  // namespace
+
+namespace {
+
+// The first number after `key: [` in a YAML flow list, and how many numbers the list holds.
+std::pair<double, std::size_t> first_and_count(const std::string& yaml, const std::string& key) {
+  const std::size_t open = yaml.find(key + ": [");
+  if (open == std::string::npos) return {0.0, 0};
+  const std::size_t close = yaml.find(']', open);
+  const std::string list = yaml.substr(open + key.size() + 3, close - open - key.size() - 3);
+  return {std::stod(list), std::size_t(std::count(list.begin(), list.end(), ',') + 1)};
+}
+
+}  // namespace
+
+// --object-out: the recording's modes as an eigenvalues object, which synth renders at the recording's
+// frequencies (with the material's damping) and estimate takes as its object.
+TEST_F(ExtractCli, ObjectOutRendersTheRecordingsFrequencies) {
+  const fs::path wav = write("bowl.wav", two_mode_impact(1.0, 0.05));
+  const fs::path object = dir_ / "object.yaml";
+  const CliRun r = run("extract " + wav.string() + " --object-out " + object.string() + " --material ren2013/glass");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string yaml = slurp(object);
+  EXPECT_NE(yaml.find("type: eigenvalues"), std::string::npos) << yaml;
+  EXPECT_NE(yaml.find("material: ren2013/glass"), std::string::npos) << yaml;
+  EXPECT_EQ(first_and_count(yaml, "gains"), std::make_pair(1.0, std::size_t(2))) << yaml;  // the loudest is 1
+
+  const fs::path modes = dir_ / "rendered.csv", out = dir_ / "rendered.wav";
+  const CliRun synth = run("synth " + object.string() + " -o " + out.string() + " --modes-out " + modes.string());
+  ASSERT_EQ(synth.code, 0) << synth.err;
+  // freq_hz of each rendered mode: the measured ones (the glass' damping moves them by ~0.003 Hz)
+  std::vector<double> freqs;
+  std::istringstream csv(slurp(modes));
+  std::string line;
+  std::getline(csv, line);
+  while (std::getline(csv, line)) freqs.push_back(std::stod(line));
+  ASSERT_EQ(freqs.size(), 2u);
+  EXPECT_NEAR(freqs[0], 523.0, 0.01);
+  EXPECT_NEAR(freqs[1], 1870.0, 0.02);
+
+  // A stiffness of one's own choosing scales the eigenvalues: lambda0 = omega^2 / (E/rho).
+  const fs::path scaled = dir_ / "scaled.yaml";
+  ASSERT_EQ(run("extract " + wav.string() + " --object-out " + scaled.string() + " --specific-modulus 1e6").code, 0);
+  const double omega = 2.0 * 3.14159265358979 * 523.0;
+  EXPECT_NEAR(first_and_count(slurp(scaled), "lambda0").first, omega * omega / 1e6, 1e-4 * omega * omega / 1e6);
+}
+
+TEST_F(ExtractCli, ObjectOutRefusesTwoRecordingsAndUnknownMaterials) {
+  const fs::path a = write("a.wav", two_mode_impact(1.0)), b = write("b.wav", two_mode_impact(1.0));
+  const fs::path object = dir_ / "object.yaml";
+  const CliRun two = run("extract " + a.string() + " " + b.string() + " --object-out " + object.string());
+  EXPECT_EQ(two.code, 2) << two.err;
+  EXPECT_NE(two.err.find("exactly one recording"), std::string::npos) << two.err;
+  const CliRun unknown = run("extract " + a.string() + " --object-out " + object.string() + " --material ren2013/cheese");
+  EXPECT_EQ(unknown.code, 2) << unknown.err;
+  EXPECT_NE(unknown.err.find("cheese"), std::string::npos) << unknown.err;
+  EXPECT_EQ(std::count(unknown.err.begin(), unknown.err.end(), '\n'), 1) << unknown.err;
+  EXPECT_FALSE(fs::exists(object));
+}
