@@ -288,6 +288,7 @@ ParamSet resolve(const ParamSetRecipe& r, const Confinement* confinement) {
   p.duration_s = r.duration_s;
   p.excitation = r.excitation;
   p.level = r.level;
+  p.room = r.room;
   p.reverb = r.reverb;
   p.transient = r.transient;
   p.noise = r.noise;
@@ -335,6 +336,11 @@ std::string canonical_recipe(const ParamSet& p) {
       p.level.attack_window_s);
   add("format %s\n", to_string(p.format).c_str());
   if (p.noise.enabled) add("noise %.17g %llu\n", p.noise.snr_db, (unsigned long long)p.noise.seed);
+  if (p.room.enabled) {
+    s += "room";
+    for (double t : p.room.rt60_s) add(" %.17g", t);
+    add(" %.17g %llu\n", p.room.drr_db, (unsigned long long)p.room.seed);
+  }
   if (p.reverb.enabled)
     add("reverb %.17g %.17g %llu\n", p.reverb.rt60_s, p.reverb.level_db, (unsigned long long)p.reverb.seed);
   if (p.transient.enabled)

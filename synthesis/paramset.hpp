@@ -17,6 +17,7 @@
 #include "synthesis/paramset_recipe.hpp"
 #include "synthesis/path_confinement.hpp"
 #include "synthesis/residual_file.hpp"
+#include "synthesis/room_response.hpp"
 
 namespace ms {
 
@@ -35,6 +36,7 @@ struct ParamSet {
   ModalModel model;              // resolved modes, support damping and doublets applied
   Excitation excitation;
   OutputLevel level;
+  Room room;                     // convolved with the rendering (and its residual), before reverb
   Reverb reverb;                 // added after rendering (relative to the direct sound), before noise
   AttackTransient transient;     // likewise
   BackgroundNoise noise;         // added after rendering, before the output level

@@ -231,11 +231,30 @@ void RecipeReader::excitation(const YAML::Node& e) const {
 }
 
 void RecipeReader::effects(const YAML::Node& fx) const {
-  r.check_keys(fx, "effects", {"support_damping", "doublets", "noise", "reverb", "transient"});
+  r.check_keys(fx, "effects", {"support_damping", "doublets", "noise", "room", "reverb", "transient"});
   const auto needs = [&](const YAML::Node& n, const std::string& path, std::initializer_list<const char*> keys) {
     for (const char* k : keys)
       if (!n[k]) r.fail(n, path, std::string("needs '") + k + "'");
   };
+  if (const YAML::Node n = fx["room"]) {
+    r.check_keys(n, "effects.room", {"rt60_s", "drr_db", "seed"});
+    needs(n, "effects.room", {"rt60_s", "drr_db"});
+    const YAML::Node t = n["rt60_s"];
+    if (t.IsSequence()) {
+      out.room.rt60_s = r.numbers(t, "effects.room.rt60_s");
+      if (out.room.rt60_s.size() != kRoomOctaveCentresHz.size())
+        r.fail(t, "effects.room.rt60_s",
+               "needs one RT60 for every band or one per octave band 125 Hz ... 8 kHz (7 values), got " +
+                   std::to_string(out.room.rt60_s.size()));
+    } else {
+      out.room.rt60_s = {r.positive(t, "effects.room.rt60_s")};
+    }
+    for (double v : out.room.rt60_s)
+      if (!(v > 0 && v <= 10)) r.fail(t, "effects.room.rt60_s", "must lie in (0, 10] s");
+    out.room.drr_db = within(n["drr_db"], "effects.room.drr_db", -40, 60, "[-40, 60] dB");
+    out.room.seed = seed(n, "effects.room");
+    out.room.enabled = true;
+  }
   if (const YAML::Node n = fx["reverb"]) {
     r.check_keys(n, "effects.reverb", {"rt60_s", "level_db", "seed"});
     needs(n, "effects.reverb", {"rt60_s", "level_db"});

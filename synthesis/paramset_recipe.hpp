@@ -21,6 +21,7 @@
 #include "synthesis/name_table.hpp"
 #include "synthesis/output_level.hpp"
 #include "synthesis/renderer_choice.hpp"
+#include "synthesis/room_response.hpp"
 
 namespace ms {
 
@@ -107,6 +108,7 @@ struct ParamSetRecipe {
   std::optional<SupportDamping> support_damping;
   std::optional<Doublets> doublets;
   BackgroundNoise noise;
+  Room room;
   Reverb reverb;
   AttackTransient transient;
   std::optional<PruneRecipe> prune;

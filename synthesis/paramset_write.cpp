@@ -143,7 +143,7 @@ void RecipeWriter::excitation(const Excitation& e) {
 }
 
 void RecipeWriter::effects(const ParamSetRecipe& r) {
-  if (!r.support_damping && !r.doublets && !r.noise.enabled && !r.reverb.enabled && !r.transient.enabled) return;
+  if (!r.support_damping && !r.doublets && !r.noise.enabled && !r.room.enabled && !r.reverb.enabled && !r.transient.enabled) return;
   key("effects");
   out << YAML::BeginMap;
   if (const auto& s = r.support_damping) {
@@ -165,6 +165,16 @@ void RecipeWriter::effects(const ParamSetRecipe& r) {
     end();
   }
   if (r.noise.enabled) seeded_noise("noise", {{"snr_db", r.noise.snr_db}}, r.noise.seed);
+  if (r.room.enabled) {
+    begin_flow("room");
+    if (r.room.rt60_s.size() == 1)
+      number("rt60_s", r.room.rt60_s[0]);
+    else
+      numbers("rt60_s", r.room.rt60_s);
+    number("drr_db", r.room.drr_db);
+    seed(r.room.seed);
+    end();
+  }
   if (r.reverb.enabled)
     seeded_noise("reverb", {{"rt60_s", r.reverb.rt60_s}, {"level_db", r.reverb.level_db}}, r.reverb.seed);
   if (r.transient.enabled)

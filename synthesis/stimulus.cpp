@@ -37,6 +37,7 @@ RenderedStimulus render_stimulus(const ParamSet& p) {
   if (const auto& r = p.residual.spectrogram)
     add_transferred_residual(out.audio.samples, *r, heard_modes(model.modes, p.excitation), p.sample_rate_hz,
                              p.residual.gain_db, p.residual.seed);
+  apply_room(out.audio.samples, p.sample_rate_hz, p.room);
   add_reverb_and_transient(out.audio.samples, p.sample_rate_hz, p.reverb, p.transient);
   add_background_noise(out.audio.samples, p.noise);
   out.level_gain = level_gain(out.audio.samples, p.sample_rate_hz, p.level);
