@@ -237,7 +237,15 @@ Answer read_answer(const Block& block, const Trial& trial, const json& v) {
       return a;
     }
     case BlockType::magnitude: {
-      const bool zero_allowed = std::get<MagnitudeBlock>(block.body).identical_pairs;  // "no difference"
+      const auto& mb = std::get<MagnitudeBlock>(block.body);
+      if (mb.scale) {
+        const auto x = finite(v);
+        if (!x || *x < mb.scale->min || *x > mb.scale->max)
+          throw AnswerError("expected a number from " + json(mb.scale->min).dump() + " to " + json(mb.scale->max).dump() +
+                            " (the block's scale), got " + v.dump());
+        return get_as<MagnitudeAnswer>(v);
+      }
+      const bool zero_allowed = mb.identical_pairs;  // "no difference"
       const auto v_ok = finite(v);
       if (!v_ok || !(*v_ok > 0.0 || (zero_allowed && *v_ok == 0.0)))
         throw AnswerError((zero_allowed ? "expected a number >= 0, got " : "expected a positive number, got ") + v.dump());

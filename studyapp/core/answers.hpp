@@ -5,7 +5,7 @@
 //                  positive when B is closer to the reference)
 //   mushra         {"<stimulus>": 0..100, ...} for every stimulus of the trial (hidden reference too)
 //   magnitude      number > 0 (the pair's dissimilarity, the modulus pair being the block's
-//                  modulus_value); >= 0 with identical pairs
+//                  modulus_value); >= 0 with identical pairs; within [min, max] with a `scale`
 //   identify       one of the block's labels
 //   rating         {"<attribute>": 1..points, ...} for every attribute
 //   adjust         {"<key>": value within the slider's range, ...} for every slider

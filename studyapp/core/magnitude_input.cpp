@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 
 namespace ms {
 
@@ -23,6 +24,17 @@ MagnitudeEntry read_magnitude(const std::string& text, bool zero_allowed) {
   if (v == 0.0 && !zero_allowed)
     return {std::nullopt, "Type a number above 0: every pair here differs at least a little."};
   return {v, ""};
+}
+
+MagnitudeEntry read_magnitude(const std::string& text, const MagnitudeBlock& block) {
+  if (!block.scale) return read_magnitude(text, block.identical_pairs);
+  MagnitudeEntry e = read_magnitude(text, true);
+  if (e.value && (*e.value < block.scale->min || *e.value > block.scale->max)) {
+    char range[80];
+    std::snprintf(range, sizeof range, "Type a number from %g to %g.", block.scale->min, block.scale->max);
+    return {std::nullopt, range};
+  }
+  return e;
 }
 
 }  // namespace ms

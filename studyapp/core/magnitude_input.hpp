@@ -5,6 +5,8 @@
 #include <optional>
 #include <string>
 
+#include "studyapp/core/protocol.hpp"
+
 namespace ms {
 
 struct MagnitudeEntry {
@@ -13,5 +15,7 @@ struct MagnitudeEntry {
 };
 
 MagnitudeEntry read_magnitude(const std::string& text, bool zero_allowed);
+// With the block's rules: 0 only where it has identical pairs; on its `scale` when it has one.
+MagnitudeEntry read_magnitude(const std::string& text, const MagnitudeBlock& block);
 
 }  // namespace ms

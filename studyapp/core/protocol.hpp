@@ -69,6 +69,10 @@ struct MagnitudeBlock {
   bool identical_pairs = false;      // with all_pairs: also each stimulus against itself (2002 study)
   std::vector<StimulusPair> pairs;
   std::vector<StimulusRef> stimuli;
+  // A bounded scale (the 2002 study's 1-10, 1 = identical): answers lie within [min, max]; without it
+  // the ratio scale is open above. modulus_value defaults to max.
+  struct Scale { double min = 1.0, max = 10.0; };
+  std::optional<Scale> scale;
 };
 struct IdentifyBlock {
   std::vector<StimulusRef> stimuli;

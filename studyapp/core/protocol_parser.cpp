@@ -197,10 +197,24 @@ Bs1116Block parse_bs1116(const YamlReader& r, const YAML::Node& n, const std::st
 
 MagnitudeBlock parse_magnitude(const YamlReader& r, const YAML::Node& n, const std::string& p, const Block& b) {
   r.check_keys(n, p, {"type", "id", "randomize", "training", "shuffle", "break_after", "repeats", "modulus", "pairs",
-                      "stimuli", "listen_all", "prompt", "feedback", "modulus_value"});
+                      "stimuli", "listen_all", "prompt", "feedback", "modulus_value", "scale"});
   MagnitudeBlock g;
   g.modulus = pair(r, required(r, n, p, b, "modulus"), p + ".modulus");
-  if (n["modulus_value"]) g.modulus_value = r.positive(n["modulus_value"], p + ".modulus_value");
+  if (const YAML::Node sc = n["scale"]) {
+    if (!sc.IsMap() || !sc["min"] || !sc["max"]) r.fail(sc, p + ".scale", "expected {min: 1, max: 10}");
+    r.check_keys(sc, p + ".scale", {"min", "max"});
+    MagnitudeBlock::Scale s{r.number(sc["min"], p + ".scale.min"), r.number(sc["max"], p + ".scale.max")};
+    if (s.min < 0.0) r.fail(sc["min"], p + ".scale.min", "must not be negative");
+    if (!(s.min < s.max)) r.fail(sc["max"], p + ".scale.max", "must be greater than min");
+    g.scale = s;
+    g.modulus_value = s.max;  // the standard pair is the most dissimilar one
+  }
+  if (n["modulus_value"]) {
+    g.modulus_value = r.positive(n["modulus_value"], p + ".modulus_value");
+    if (g.scale && (g.modulus_value < g.scale->min || g.modulus_value > g.scale->max))
+      r.fail(n["modulus_value"], p + ".modulus_value", "must lie on the block's scale (" + n["scale"]["min"].Scalar() +
+                                                          " to " + n["scale"]["max"].Scalar() + ")");
+  }
   g.stimuli = refs(r, n["stimuli"], p + ".stimuli");
   const YAML::Node pr = n["pairs"];
   if (!pr || (pr.IsScalar() && pr.Scalar() == "all")) {

@@ -149,7 +149,11 @@ SimulatedAnswer SimulatedListener::answer_magnitude(const MagnitudeBlock& m, con
   const double d_mod = m.modulus ? distance_db(m.modulus->at(0).name, m.modulus->at(1).name) : 3.0;
   const double d = noisy(distance_db(s.at(0), s.at(1)));
   const double ratio = (d + 0.5) / (d_mod + 0.5) * std::exp(0.1 * unit(rng_));
-  const MagnitudeAnswer value{std::max(1.0, std::round(m.modulus_value * ratio))};
+  // On a bounded scale (1 = identical) the ratio applies above its bottom: the modulus pair is at
+  // modulus_value, an identical pair at min.
+  const MagnitudeAnswer value{m.scale ? clamp(std::round(m.scale->min + (m.modulus_value - m.scale->min) * ratio),
+                                              m.scale->min, m.scale->max)
+                                      : std::max(1.0, std::round(m.modulus_value * ratio))};
   return {value, reaction_ms(d, unit) + 1500.0, int(s.size())};
 }
 

@@ -78,6 +78,15 @@ bool any_staircase_choices(const std::vector<ResponseRow>& rows) {
   });
 }
 
+// Does any magnitude block use a bounded scale? Only then does magnitude.csv get the scale's columns
+// (tables of open ratio scales stay as they always were).
+bool any_bounded_scale(const std::map<std::string, Protocol>& protocols) {
+  for (const auto& [id, p] : protocols)
+    for (const Block& b : p.blocks)
+      if (const auto* m = std::get_if<MagnitudeBlock>(&b.body); m && m->scale) return true;
+  return false;
+}
+
 const std::vector<std::string> kBase{"study", "participant", "session", "autopilot", "block", "trial"};
 
 const std::map<std::string, std::vector<std::string>>& type_columns() {
@@ -85,7 +94,7 @@ const std::map<std::string, std::vector<std::string>>& type_columns() {
       {"ab", {"stimulus_a", "stimulus_b", "stimulus_x", "response", "correct", "pair_first", "pair_second",
               "swapped", "response_oriented"}},
       {"mushra", {"condition", "rating"}},
-      {"magnitude", {"first", "second", "value", "modulus_a", "modulus_b", "modulus_value"}},
+      {"magnitude", {"first", "second", "value", "modulus_a", "modulus_b", "modulus_value"}},  // + scale_min, scale_max
       {"identify", {"stimulus", "truth", "response", "correct"}},
       {"rating", {"stimulus", "attribute", "value"}},
       {"adjust", {"stimulus", "key", "value", "plays", "rt_ms"}},
@@ -156,6 +165,7 @@ std::map<std::string, std::string> tidy_tables(const std::vector<ResponseRow>& r
                                                std::vector<std::string>* unreadable) {
   std::vector<std::string> factors = factor_names(protocols);
   const bool staircase_choices = any_staircase_choices(rows);
+  const bool scale_columns = any_bounded_scale(protocols);
   std::map<std::string, std::string> out;
   for (const ResponseRow& r : rows) {
     const auto cols = type_columns().find(r.block_type);
@@ -168,6 +178,7 @@ std::map<std::string, std::string> tidy_tables(const std::vector<ResponseRow>& r
       std::vector<std::string> header = kBase;
       header.insert(header.end(), cols->second.begin(), cols->second.end());
       if (r.block_type == "staircase" && staircase_choices) header.push_back("chosen");
+      if (r.block_type == "magnitude" && scale_columns) header.insert(header.end(), {"scale_min", "scale_max"});
       // A factor named like a column gets a suffix rather than a duplicate column.
       for (const std::string& f : factors)
         header.push_back(std::find(header.begin(), header.end(), f) == header.end() ? f : f + "_factor");
@@ -215,7 +226,11 @@ std::map<std::string, std::string> tidy_tables(const std::vector<ResponseRow>& r
       const auto* mb = block ? std::get_if<MagnitudeBlock>(&block->body) : nullptr;
       std::vector<std::string> modulus{"", "", "NA"};
       if (mb && mb->modulus) modulus = {(*mb->modulus)[0].name, (*mb->modulus)[1].name, csv::number(mb->modulus_value)};
-      add({at(0), at(1), cell(magnitude->value), modulus[0], modulus[1], modulus[2]}, at(0), at(1));
+      std::vector<std::string> row{at(0), at(1), cell(magnitude->value), modulus[0], modulus[1], modulus[2]};
+      const bool bounded = mb && mb->scale;
+      if (scale_columns)
+        row.insert(row.end(), {bounded ? csv::number(mb->scale->min) : "NA", bounded ? csv::number(mb->scale->max) : "NA"});
+      add(std::move(row), at(0), at(1));
     } else if (const auto* identify = std::get_if<IdentifyAnswer>(&answer)) {
       const std::string truth = block ? identify_truth(stimulus(at(0)), at(0), *block) : "";
       add({at(0), truth, identify->label, truth.empty() ? "NA" : (truth == identify->label ? "1" : "0")}, at(0));

@@ -1,6 +1,7 @@
 // Magnitude estimation: the reference pair (= the block's modulus value, 100 by default) is played first, then the trial's pair; the participant
 // types how different the pair sounds relative to the reference pair. The field takes a decimal point or
-// comma, says why a value is refused (core's read_magnitude), takes 0 where the block has identical pairs,
+// comma, says why a value is refused (core's read_magnitude), takes 0 where the block has identical pairs
+// (on a bounded `scale`: any value from its min to its max, shown under the prompt),
 // and has the keyboard focus from the start (Enter = Next).
 #include <QLineEdit>
 #include <QTimer>
@@ -17,7 +18,7 @@ class MagnitudeView : public TrialView {
   MagnitudeView(StudyController& c, QWidget* parent) : TrialView(c, parent) {
     const Trial& trial = c.trial();
     const auto* mb = std::get_if<MagnitudeBlock>(&c.block().body);
-    zero_allowed_ = mb && mb->identical_pairs;
+    if (mb) block_ = *mb;
     std::vector<std::string> names;
     QStringList labels;
     if (mb && mb->modulus) {
@@ -31,11 +32,18 @@ class MagnitudeView : public TrialView {
     const double modulus = mb ? mb->modulus_value : 100.0;
     const QString m = QString::number(modulus, 'g', 6), half = QString::number(modulus / 2, 'g', 6),
                   twice = QString::number(modulus * 2, 'g', 6);
-    add_prompt(modulus_count_ ? QString("First listen to the reference pair: its difference counts as %1. Then listen to "
+    add_prompt(modulus_count_ && block_.scale
+                   ? QString("First listen to the reference pair: the most different pair, counted as %1. Then listen "
+                             "to A and B and type how different they sound (%2 = half as different).").arg(m, half)
+               : modulus_count_ ? QString("First listen to the reference pair: its difference counts as %1. Then listen to "
                                         "A and B and type how different they sound (%2 = half as different, %3 = twice "
                                         "as different).").arg(m, half, twice)
                               : QString("Listen to A and B and type how different they sound."));
-    if (zero_allowed_) add_note("Type 0 if A and B sound exactly the same.");
+    if (block_.scale)
+      add_note(QString("Use the scale from %1 (identical) to %2 (as different as the reference pair).")
+                   .arg(block_.scale->min, 0, 'g', 6)
+                   .arg(block_.scale->max, 0, 'g', 6));
+    else if (block_.identical_pairs) add_note("Type 0 if A and B sound exactly the same.");
     add_sound_buttons(labels, false);
     entry_ = new QLineEdit(body());
     entry_->setObjectName("magnitude");
@@ -43,15 +51,15 @@ class MagnitudeView : public TrialView {
     entry_->setMaximumWidth(entry_->fontMetrics().averageCharWidth() * 40);
     connect(entry_, &QLineEdit::textChanged, this, [this] { refresh(); });
     layout_->addWidget(entry_);
-    add_next([this] { return MagnitudeAnswer{*read_magnitude(entry_->text().toStdString(), zero_allowed_).value}; });
+    add_next([this] { return MagnitudeAnswer{*read_magnitude(entry_->text().toStdString(), block_).value}; });
     gate_pair();
     QTimer::singleShot(0, entry_, [e = entry_] { e->setFocus(Qt::OtherFocusReason); });
   }
 
  protected:
-  bool ready() const override { return read_magnitude(entry_->text().toStdString(), zero_allowed_).value.has_value(); }
+  bool ready() const override { return read_magnitude(entry_->text().toStdString(), block_).value.has_value(); }
   QString why_incomplete() const override {
-    return QString::fromStdString(read_magnitude(entry_->text().toStdString(), zero_allowed_).problem);
+    return QString::fromStdString(read_magnitude(entry_->text().toStdString(), block_).problem);
   }
   void on_sound_played(int) override { gate_pair(); }
 
@@ -63,7 +71,7 @@ class MagnitudeView : public TrialView {
   }
 
   std::size_t modulus_count_ = 0;
-  bool zero_allowed_ = false;
+  MagnitudeBlock block_;  // its rules for a typed value (zero, scale)
   QLineEdit* entry_ = nullptr;
 };
 

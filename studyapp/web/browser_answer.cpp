@@ -26,7 +26,7 @@ nlohmann::json stored_answer(const Block& block, const Presentation& p, const nl
       if (sent.is_number()) return sent;
       if (!sent.is_string()) throw Refusal(422, "Type a number.");
       const auto* spec = std::get_if<MagnitudeBlock>(&block.body);
-      const MagnitudeEntry entry = read_magnitude(sent.get<std::string>(), spec && spec->identical_pairs);
+      const MagnitudeEntry entry = spec ? read_magnitude(sent.get<std::string>(), *spec) : read_magnitude(sent.get<std::string>(), false);
       if (!entry.value) throw Refusal(422, entry.problem.empty() ? "Type a number." : entry.problem);
       return *entry.value;
     }

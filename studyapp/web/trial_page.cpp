@@ -57,7 +57,8 @@ nlohmann::json page_json(Session& session, const Presentation& p, StimulusCache&
   if (const auto* b = std::get_if<MagnitudeBlock>(&block.body)) {
     page["modulus_value"] = b->modulus_value;
     page["modulus_count"] = b->modulus ? 2 : 0;
-    page["zero_allowed"] = b->identical_pairs;
+    page["zero_allowed"] = b->identical_pairs && !b->scale;
+    if (b->scale) page["scale"] = {{"min", b->scale->min}, {"max", b->scale->max}};
   }
   if (const auto* b = std::get_if<IdentifyBlock>(&block.body)) page["labels"] = b->labels;
   if (const auto* b = std::get_if<RatingBlock>(&block.body)) {

@@ -47,9 +47,12 @@ TEST(ExportMagnitude, VanDenDoelTellsAndUsesTheSameModulus) {
   std::size_t blocks = 0;
   for (const Block& b : p.blocks) {
     if (const auto* i = std::get_if<InstructionsBlock>(&b.body); i && b.id == "exp3")
-      EXPECT_NE(i->text.find("dissimilarity is 100"), std::string::npos) << i->text;
+      EXPECT_NE(i->text.find("dissimilarity is 10."), std::string::npos) << i->text;
     if (const auto* m = std::get_if<MagnitudeBlock>(&b.body)) {
-      EXPECT_EQ(m->modulus_value, 100.0) << b.id;
+      EXPECT_EQ(m->modulus_value, 10.0) << b.id;  // the paper's anchor, at the top of its 1-10 scale
+      ASSERT_TRUE(m->scale.has_value()) << b.id;
+      EXPECT_EQ(m->scale->min, 1.0) << b.id;  // 1 = identical
+      EXPECT_EQ(m->scale->max, 10.0) << b.id;
       ++blocks;
     }
   }

@@ -7,9 +7,12 @@ export default function magnitude(trial) {
   const page = trial.page;
   const m = page.modulus_value;
   const withModulus = page.modulus_count > 0;
-  prompt(trial, withModulus
+  prompt(trial, withModulus && page.scale
+    ? `First listen to the reference pair: the most different pair, counted as ${m}. Then listen to A and B and type how different they sound (${m / 2} = half as different).`
+    : withModulus
     ? `First listen to the reference pair: its difference counts as ${m}. Then listen to A and B and type how different they sound (${m / 2} = half as different, ${m * 2} = twice as different).`
     : 'Listen to A and B and type how different they sound.');
+  if (page.scale) note(trial, `Use the scale from ${page.scale.min} (identical) to ${page.scale.max} (as different as the reference pair).`);
   if (page.zero_allowed) note(trial, 'Type 0 if A and B sound exactly the same.');
   const all = page.sounds.map((_, i) => i);
   soundButtons(trial, all);
