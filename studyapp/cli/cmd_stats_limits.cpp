@@ -1,5 +1,8 @@
 // modalstudy stats limits: descending method of limits (the 2002 study's a_v procedure) per track
-// (analysis/method_of_limits.hpp).
+// (analysis/method_of_limits.hpp). Reads the export's limits.csv as written (--level level --response
+// response --track participant,block,trial). Its test on series written by hand from Table 1 only
+// checks how a series is read: getting Table 1 back from them is circular and says nothing about the
+// paper; only a lab's own series can disagree with it.
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
