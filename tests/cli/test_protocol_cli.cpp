@@ -23,7 +23,34 @@ TEST(ProtocolCli, DemoChecksClean) {
   EXPECT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_TRUE(j["problems"].empty());
-  EXPECT_EQ(j["blocks"], 11);
+  EXPECT_EQ(j["blocks"], 12);
+}
+
+// A limits block that ascends is refused in one located line, exit 2; a good one schedules one trial
+// per series (the series itself descends at run time).
+TEST(ProtocolCli, LimitsBlockCheckedAndScheduled) {
+  TempDir dir;
+  const std::string set = std::string(MODALSTUDY_SOURCE_DIR) + "/stimuli/replications/vandendoel2002/vase.yaml";
+  const std::string head = "study: t\nsample_rate: 22050\nallow_outside: true\nstimuli:\n  v: {paramset: " + set +
+                           ", prune: {method: masking, threshold_db: 20}}\nblocks:\n";
+  const std::string bad = dir.write("bad.yaml", head + "  - {type: limits, id: l, stimulus: v, parameter: prune.threshold_db, "
+                                                       "start: 20, step: 1}\n");
+  const auto r = run_cli("protocol check " + bad, dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(ms::test::count_lines(r.err), 1u) << r.err;
+  EXPECT_NE(r.err.find(bad + ":7:"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("negative step"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  const std::string good = dir.write("good.yaml", head + "  - {type: limits, id: l, stimulus: v, parameter: prune.threshold_db, "
+                                                         "start: 20, step: -1, floor: 0, repeats: 3}\n");
+  const auto ok = run_cli("protocol check " + good, dir);
+  EXPECT_EQ(ok.exit_code, 0) << ok.err;
+  const auto s = run_cli("protocol schedule " + good + " --participant P1 --json", dir);
+  ASSERT_EQ(s.exit_code, 0) << s.err;
+  const auto j = nlohmann::json::parse(s.out);
+  ASSERT_TRUE(j.contains("trials")) << s.out;
+  EXPECT_EQ(j["trials"].size(), 3u);  // three series
+  for (const auto& t : j["trials"]) EXPECT_EQ(t["type"], "limits") << t.dump();
 }
 
 TEST(ProtocolCli, EveryProblemOnItsOwnLineAndExit2) {
