@@ -19,6 +19,7 @@ void register_stats(CLI::App& app) {
   register_stats_limits(*group);
   register_stats_mds(*group);
   register_stats_magnitude(*group);
+  register_stats_reference_error(*group);
 }
 
 }  // namespace ms::cli

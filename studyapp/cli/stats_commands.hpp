@@ -14,5 +14,6 @@ void register_stats_staircase(CLI::App& group);
 void register_stats_limits(CLI::App& group);
 void register_stats_mds(CLI::App& group);
 void register_stats_magnitude(CLI::App& group);
+void register_stats_reference_error(CLI::App& group);
 
 }  // namespace ms::cli
