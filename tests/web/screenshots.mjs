@@ -23,7 +23,7 @@ for (const [scale, dir] of [[1, out], [1.5, join(source, 'build', 'web-shots-150
     if (s.kind === 'finished') break;
     if (s.kind === 'error') fail(`the page shows an error: ${s.text}`);
     if (s.kind === 'message') { await p.next(); continue; }
-    if (!shot.has(s.type) && ['mushra', 'bs1116', 'ab', 'adjust'].includes(s.type)) {
+    if (!shot.has(s.type) && ['mushra', 'bs1116', 'ab', 'adjust', 'limits', 'staircase'].includes(s.type)) {
       shot.add(s.type);
       await page.screenshot({ path: join(dir, `web-${s.type}.png`) });
     }
