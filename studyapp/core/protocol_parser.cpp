@@ -278,17 +278,24 @@ AdjustBlock parse_adjust(const YamlReader& r, const YAML::Node& n, const std::st
   return ad;
 }
 
-StaircaseBlock parse_staircase(const YamlReader& r, const YAML::Node& n, const std::string& p, const Block& b) {
-  r.check_keys(n, p, {"type", "id", "randomize", "training", "shuffle", "break_after", "repeats", "stimulus",
-                      "reference", "parameter", "start", "step", "down_up", "reversals",
-                      "listen_all", "prompt", "feedback"});
-  StaircaseBlock s;
+// The keys a staircase and a series of limits share: a stimulus played at a level of `parameter`,
+// against a reference, from `start` by `step`.
+template <typename LevelBlock>
+void read_level_series(const YamlReader& r, const YAML::Node& n, const std::string& p, const Block& b, LevelBlock& s) {
   s.stimulus = ref(r, required(r, n, p, b, "stimulus"), p + ".stimulus");
   if (n["reference"]) s.reference = ref(r, n["reference"], p + ".reference");
   s.parameter = r.text(required(r, n, p, b, "parameter"), p + ".parameter");
   s.parameter_where = r.where(n["parameter"], p + ".parameter");
   s.start = r.number(required(r, n, p, b, "start"), p + ".start");
   s.step = r.number(required(r, n, p, b, "step"), p + ".step");
+}
+
+StaircaseBlock parse_staircase(const YamlReader& r, const YAML::Node& n, const std::string& p, const Block& b) {
+  r.check_keys(n, p, {"type", "id", "randomize", "training", "shuffle", "break_after", "repeats", "stimulus",
+                      "reference", "parameter", "start", "step", "down_up", "reversals",
+                      "listen_all", "prompt", "feedback"});
+  StaircaseBlock s;
+  read_level_series(r, n, p, b, s);
   if (s.step == 0.0) r.fail(n["step"], p + ".step", "must not be 0");
   if (const YAML::Node du = n["down_up"]) {
     if (!du.IsSequence() || du.size() != 2) r.fail(du, p + ".down_up", "expected [down, up], e.g. [2, 1]");
@@ -303,12 +310,7 @@ LimitsBlock parse_limits(const YamlReader& r, const YAML::Node& n, const std::st
   r.check_keys(n, p, {"type", "id", "randomize", "training", "shuffle", "break_after", "repeats", "stimulus",
                       "reference", "parameter", "start", "step", "floor", "listen_all", "prompt"});
   LimitsBlock l;
-  l.stimulus = ref(r, required(r, n, p, b, "stimulus"), p + ".stimulus");
-  if (n["reference"]) l.reference = ref(r, n["reference"], p + ".reference");
-  l.parameter = r.text(required(r, n, p, b, "parameter"), p + ".parameter");
-  l.parameter_where = r.where(n["parameter"], p + ".parameter");
-  l.start = r.number(required(r, n, p, b, "start"), p + ".start");
-  l.step = r.number(required(r, n, p, b, "step"), p + ".step");
+  read_level_series(r, n, p, b, l);
   if (!(l.step < 0.0)) r.fail(n["step"], p + ".step", "a descending series needs a negative step (e.g. -1), got " + n["step"].Scalar());
   if (n["floor"]) {
     l.floor = r.number(n["floor"], p + ".floor");
