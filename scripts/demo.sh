@@ -42,6 +42,9 @@ build/bin/modalstudy stats confusion "$study/export/identify.csv" --truth stimul
 echo "== staircase thresholds (a_v, dB), one track per participant"
 build/bin/modalstudy stats staircase "$study/export/staircase.csv" --level level --track participant \
   --trial step
+echo "== method of limits (a_v, dB): the level before the first change heard, one series per participant"
+build/bin/modalstudy stats limits "$study/export/limits.csv" --level level --response response \
+  --track participant,block,trial
 echo
 echo "Stimuli: $(pwd)/build/stimuli/ (WAV files, manifest.json with SHA-256 and recipe hashes)"
 echo "Study:   $(pwd)/$study/ (results.sqlite, export/*.csv, mushra.png, confusion.png)"
