@@ -3,6 +3,7 @@
 // datasets and paired post-hoc t-tests: Sterling et al. 2019's Fig. 1.15 in one call, per attribute.
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
