@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <random>
 #include <string>
@@ -21,6 +22,12 @@
 
 namespace ms::test {
 
+// A seed range or count from the environment, or the default.
+inline std::size_t env_or(const char* name, std::size_t fallback) {
+  const char* v = std::getenv(name);
+  return v ? std::stoul(v) : fallback;
+}
+
 struct CasePlan {
   std::uint64_t seed = 0;
   std::vector<std::string> effects;
@@ -30,9 +37,9 @@ struct CasePlan {
 // Effects the runs hide: all the generator can hide.
 inline std::vector<std::string> planned_effects() { return audit::hideable_effects(); }
 
-// Case i of a run: every (effects + 3) cases, 2 clean, one with each effect, 1 with a random pair.
-inline CasePlan plan_case(std::uint64_t seed, std::size_t i, bool grid_strengths) {
-  const std::vector<std::string> all = planned_effects();
+// Case i of a run over the effects `all`: every (effects + 3) cases, 2 clean, one with each effect,
+// 1 with a random pair.
+inline CasePlan plan_case(std::uint64_t seed, std::size_t i, bool grid_strengths, const std::vector<std::string>& all) {
   std::mt19937_64 rng(seed * 7919u + 17u);
   std::uniform_real_distribution<double> U(0.0, 1.0);
   auto strength = [&] {
@@ -58,6 +65,11 @@ inline CasePlan plan_case(std::uint64_t seed, std::size_t i, bool grid_strengths
   return p;
 }
 
+// ... over the effects the first generator hides.
+inline CasePlan plan_case(std::uint64_t seed, std::size_t i, bool grid_strengths) {
+  return plan_case(seed, i, grid_strengths, planned_effects());
+}
+
 struct Tally {
   std::vector<std::string> labels;  // effects + "none"
   std::map<std::string, std::map<std::string, int>> confusion;  // hidden -> named -> count
@@ -66,6 +78,9 @@ struct Tally {
   int with_effect = 0, shrunk = 0;
   int halved_above_floor = 0;  // the held-out gap above the repeatability floor at least halves
   std::vector<double> shrink, floor_db;
+  // The confusion matrix's rows (hidden) and columns (named), "none" last in each; empty: the first
+  // generator's effects for both.
+  std::vector<std::string> rows, columns;
 
   void add(const CasePlan& plan, const audit::AuditResult& r) {
     std::vector<std::string> named;
@@ -94,10 +109,12 @@ struct Tally {
   void print() const {
     std::vector<std::string> cols = audit::hideable_effects();  // columns: everything the audit can name
     cols.push_back("none");
+    if (!columns.empty()) cols = columns;
+    const std::vector<std::string> row_labels = rows.empty() ? cols : rows;
     std::printf("confusion (rows: hidden, columns: named; a case with two effects counts in both rows)\n%-17s", "");
     for (const auto& c : cols) std::printf("%17s", c.c_str());
     std::printf("\n");
-    for (const auto& r : cols) {
+    for (const auto& r : row_labels) {
       std::printf("%-17s", r.c_str());
       for (const auto& c : cols) {
         const auto it = confusion.find(r);

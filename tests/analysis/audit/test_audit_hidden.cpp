@@ -22,12 +22,6 @@ namespace {
 // the held-out gap above the repeatability floor.
 constexpr double kNamedBar = 0.9, kQuietBar = 0.9, kGapShrinkBar = 0.9;
 
-// A seed range or count from the environment, or the default.
-std::size_t env_or(const char* name, std::size_t fallback) {
-  const char* v = std::getenv(name);
-  return v ? std::stoul(v) : fallback;
-}
-
 audit::AuditResult audit_case(const CasePlan& plan) {
   const audit::HiddenCase hc = audit::generate_hidden_case(plan.seed, plan.effects, plan.strengths);
   return audit::run_audit(audit::make_audit_data(hc.recordings));

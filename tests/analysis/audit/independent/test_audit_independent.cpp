@@ -1,0 +1,106 @@
+// The audit proven on a second, independently written generator (independent_generator.hpp): its own
+// rendering, room, bursts, contacts, hand damping and hit points, with per-strike per-mode amplitude
+// jitter of 1-3 dB always. The bars are the first generator's: each hidden effect named in >= 90 % of
+// the cases hiding it, nothing named in >= 90 % of clean cases, the held-out gap above the
+// repeatability floor halving in >= 90 % of the cases with an effect. Prints the confusion matrix;
+// hit_position is a row even while the audit's catalog cannot name it (the columns show what it names
+// instead).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "analysis/audit/audit.hpp"
+#include "analysis/audit/effect_catalog.hpp"
+#include "../audit_cases.hpp"
+#include "independent_generator.hpp"
+
+namespace ms::test {
+namespace {
+
+constexpr double kNamedBar = 0.9, kQuietBar = 0.9, kAboveFloorBar = 0.9;
+
+// Rows: the effects this generator hides; columns: everything the audit can name, and the hidden
+// effects it cannot, then none.
+Tally independent_tally() {
+  Tally t;
+  t.rows = indep::independent_effects();
+  t.rows.push_back("none");
+  for (const auto& e : audit::effect_catalog()) t.columns.push_back(e.name);
+  for (const auto& e : indep::independent_effects())
+    if (std::find(t.columns.begin(), t.columns.end(), e) == t.columns.end()) t.columns.push_back(e);
+  t.columns.push_back("none");
+  return t;
+}
+
+void print_case(const CasePlan& plan, const indep::IndependentCase& c, const audit::AuditResult& r, double seconds) {
+  std::printf("%s\n  strengths:", c.summary.c_str());
+  for (std::size_t i = 0; i < plan.effects.size(); ++i) std::printf(" %s(%.2f)", plan.effects[i].c_str(), plan.strengths[i]);
+  std::printf(" | gap %.2f -> %.2f (held-out %.2f -> %.2f) | floor %.2f, share above it %.2f | %.1f s | named:",
+              r.gap_before_db, r.gap_after_db, r.cv_gap_before_db, r.cv_gap_after_db, r.floor_db, r.share_above_floor,
+              seconds);
+  for (const auto& n : r.named) std::printf(" %s", n.effect.c_str());
+  std::printf(" | first round:");
+  if (!r.rounds.empty())
+    for (const auto& cand : r.rounds.front())
+      std::printf(" %s=%.3g%s(%.2f)", cand.effect.c_str(), cand.statistic, cand.detector_passes ? "*" : "",
+                  cand.improvement_db);
+  std::printf("\n");
+  std::fflush(stdout);
+}
+
+// Runs cases [first, first + count) of the plan (case i uses seed first + i); prints the tally.
+Tally run_cases(std::size_t first, std::size_t count, bool grid_strengths, bool verbose) {
+  Tally tally = independent_tally();
+  const auto t0 = std::chrono::steady_clock::now();
+  for (std::size_t i = 0; i < count; ++i) {
+    const CasePlan plan = plan_case(first + i, i, grid_strengths, indep::independent_effects());
+    const auto c0 = std::chrono::steady_clock::now();
+    const indep::IndependentCase c = indep::generate_independent_case(plan.seed, plan.effects, plan.strengths);
+    const audit::AuditResult r = audit::run_audit(audit::make_audit_data(c.recordings));
+    if (verbose) print_case(plan, c, r, std::chrono::duration<double>(std::chrono::steady_clock::now() - c0).count());
+    tally.add(plan, r);
+  }
+  tally.print();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::printf("%zu cases in %.1f s (%.2f s a case)\n", count, seconds, seconds / double(count));
+  return tally;
+}
+
+void expect_bars(Tally& tally) {
+  for (const auto& e : indep::independent_effects()) {
+    ASSERT_GE(tally.hidden[e], 10) << e;
+    EXPECT_GE(double(tally.hit[e]), kNamedBar * tally.hidden[e]) << e;
+  }
+  EXPECT_GE(double(tally.clean_quiet), kQuietBar * tally.clean);
+  EXPECT_GE(double(tally.halved_above_floor), kAboveFloorBar * tally.with_effect);
+}
+
+// Threshold tuning on this generator (disabled: --gtest_also_run_disabled_tests): every case printed.
+// Tuning seeds 40000-40999 with grid strengths; INDEPENDENT_TUNING_FIRST / _COUNT pick them.
+TEST(AuditIndependent, DISABLED_Tuning) {
+  const Tally tally = run_cases(env_or("INDEPENDENT_TUNING_FIRST", 40000), env_or("INDEPENDENT_TUNING_COUNT", 44), true, true);
+  EXPECT_GT(tally.clean, 0);
+}
+
+// Held-out seeds 41000-41219 (never used for tuning: not 1000-1179, 5000-12239, 40000-40999), strengths
+// drawn from (0, 1), in two halves ctest runs side by side (each 110 cases, 10 of each effect alone,
+// 20 clean, 10 pairs): the audit must meet the bars on each half. Disabled until the audit meets them
+// (the room, hit_position and broader contact and burst detectors are being built); INDEPENDENT_VERBOSE
+// prints every case.
+TEST(AuditIndependent, DISABLED_HeldOutSeedsMeetTheBarsFirstHalf) {
+  Tally tally = run_cases(41000, 110, false, std::getenv("INDEPENDENT_VERBOSE") != nullptr);
+  expect_bars(tally);
+}
+
+TEST(AuditIndependent, DISABLED_HeldOutSeedsMeetTheBarsSecondHalf) {
+  Tally tally = run_cases(41110, 110, false, std::getenv("INDEPENDENT_VERBOSE") != nullptr);
+  expect_bars(tally);
+}
+
+}  // namespace
+}  // namespace ms::test
