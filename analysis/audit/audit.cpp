@@ -27,8 +27,7 @@ std::vector<ModeResidual> mode_residuals(const AuditData& data, const AuditModel
       const TrackObservation& o = data.tracks[std::size_t(m.track)].strikes[s];
       if (!o.present) continue;
       const double d = strike_decay(model, s, n);
-      const double tau = model.contact_s.empty() ? 0.0 : model.contact_s[s];
-      const double a = m.amp * model.gain[s] * contact_gain(tau, d, m.freq_hz);
+      const double a = strike_amp(model, s, n);
       out.push_back({s, m.freq_hz, (o.freq_hz - m.freq_hz) / m.freq_hz, (o.decay_per_s - d) / d,
                      20.0 * std::log10(o.amp / a)});
     }
@@ -68,6 +67,26 @@ GapLocation locate(const AuditData& data, const AuditModel& model, const std::ve
   return loc;
 }
 
+// The object's shapes per given mode onto the baseline's modes (a merged pair: its members' energy).
+void place_shapes(const ObjectShapes& shapes, const ModalModel& given, const std::vector<std::size_t>& audit_mode_of_given,
+                  AuditModel& model) {
+  if (shapes.positions.empty()) return;
+  HitPattern& hit = model.hit;
+  hit.positions = shapes.positions;
+  hit.home_position = shapes.home_position;
+  hit.shape_ln.assign(shapes.positions.size(), std::vector<double>(model.modes.size(), 0.0));
+  for (std::size_t p = 0; p < shapes.positions.size(); ++p) {
+    std::vector<double> there(model.modes.size(), 0.0), home(model.modes.size(), 0.0);
+    for (std::size_t i = 0; i < given.modes.size(); ++i) {
+      const double a2 = given.modes[i].amp * given.modes[i].amp;
+      there[audit_mode_of_given[i]] += a2 * std::exp(2.0 * shapes.shape_ln[p][i]);
+      home[audit_mode_of_given[i]] += a2;
+    }
+    for (std::size_t j = 0; j < model.modes.size(); ++j)
+      if (home[j] > 0.0) hit.shape_ln[p][j] = 0.5 * std::log(there[j] / home[j]);
+  }
+}
+
 std::vector<GapMap> maps_of(const AuditData& data, const AuditModel& model) {
   std::vector<GapMap> maps;
   for (std::size_t s = 0; s < data.strike_count(); ++s) maps.push_back(strike_gap(model, data, s));
@@ -86,7 +105,11 @@ AuditResult run_audit(const AuditData& data, const std::optional<ModalModel>& gi
   result.metric = kGapMetric;
   result.strikes = data.strike_count();
   Recipe recipe;
-  if (given) recipe.given = baseline_from_model(*given, data);
+  if (given) {
+    std::vector<std::size_t> audit_mode_of_given;
+    recipe.given = baseline_from_model(*given, data, &audit_mode_of_given);
+    place_shapes(options.object_shapes, *given, audit_mode_of_given, *recipe.given);
+  }
   const std::vector<Effect> catalog = effect_catalog();
   AuditModel current;
   double gap = in_sample_gap(data, recipe, &current);
@@ -105,7 +128,10 @@ AuditResult run_audit(const AuditData& data, const std::optional<ModalModel>& gi
     double best_improvement = 0.0, best_cv = cv;
     Detection best_detection;
     std::vector<AuditModel> best_folds;
+    // Specific effects first; the generic ones only when none of those is named this round.
+    for (const bool generic : {false, true})
     for (const Effect& e : catalog) {
+      if (e.generic != generic) continue;
       if (std::find(recipe.effects.begin(), recipe.effects.end(), &e) != recipe.effects.end()) continue;
       bool named_before = false;
       for (const NamedEffect& n : result.named) named_before |= n.effect == e.name;
@@ -114,6 +140,11 @@ AuditResult run_audit(const AuditData& data, const std::optional<ModalModel>& gi
       c.effect = e.name;
       if (data.strike_count() < e.min_strikes) {
         c.note = "needs at least " + std::to_string(e.min_strikes) + " strikes";
+        round.push_back(c);
+        continue;
+      }
+      if (generic && best) {
+        c.note = "not tried this round: " + best->name + " explains the strikes more specifically";
         round.push_back(c);
         continue;
       }

@@ -18,6 +18,9 @@ struct AuditOptions {
   StrikeOptions strikes;
   MatchOptions matching;
   std::size_t max_effects = 3;
+  // The given model's mode shapes over hit positions (given_model.hpp's object_shapes): hit_position
+  // then fits a position per strike instead of a low-rank pattern. Empty: none known.
+  ObjectShapes object_shapes;
 };
 
 struct NamedEffect {

@@ -22,6 +22,22 @@ double strike_decay(const AuditModel& model, std::size_t s, std::size_t n) {
   return d;
 }
 
+double strike_factor(const AuditModel& model, std::size_t s, std::size_t n) {
+  const AuditMode& m = model.modes[n];
+  const double tau = model.contact_s.empty() ? 0.0 : model.contact_s[s];
+  double f = contact_gain(tau, strike_decay(model, s, n), m.freq_hz);
+  if (model.hit.active()) f *= std::exp(model.hit.log_factor(s, n));
+  return f;
+}
+
+double amp_before_gain(const AuditModel& model, std::size_t s, std::size_t n) {
+  return model.modes[n].amp * strike_factor(model, s, n);
+}
+
+double strike_amp(const AuditModel& model, std::size_t s, std::size_t n) {
+  return model.gain[s] * amp_before_gain(model, s, n);
+}
+
 double contact_gain(double contact_s, double decay_per_s, double freq_hz) {
   if (contact_s <= 0.0) return 1.0;
   // Closed form of contact_factor for the raised cosine (the fits call this ~10^6 times):
@@ -48,6 +64,7 @@ ModalModel strike_model(const AuditModel& model, std::size_t s) {
     const AuditMode& m = model.modes[n];
     const double d = strike_decay(model, s, n);
     double amp = m.amp * model.gain[s], phase = 0.0;
+    if (model.hit.active()) amp *= std::exp(model.hit.log_factor(s, n));
     if (tau > 0.0) {
       const std::complex<double> g = contact_factor(e, d, m.freq_hz);
       amp *= std::abs(g);
@@ -148,14 +165,12 @@ double strike_variation(const MeasuredStrikes& measured) {
 
 void fit_gain(AuditModel& model, const AuditData& data, std::size_t s) {
   std::vector<double> ratios;
-  const double tau = model.contact_s.empty() ? 0.0 : model.contact_s[s];
   for (std::size_t n = 0; n < model.modes.size(); ++n) {
     const AuditMode& m = model.modes[n];
     if (m.track < 0 || m.amp <= 0.0) continue;
     const TrackObservation& o = data.tracks[std::size_t(m.track)].strikes[s];
     if (!o.present) continue;
-    const double g = contact_gain(tau, strike_decay(model, s, n), m.freq_hz);
-    ratios.push_back(std::log(o.amp / (m.amp * g)));
+    ratios.push_back(std::log(o.amp / amp_before_gain(model, s, n)));
   }
   if (ratios.empty()) {
     model.gain[s] = 1.0;

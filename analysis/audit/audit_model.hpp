@@ -1,13 +1,14 @@
 // The model an audit compares with the recordings: modes (each tied to a measured track or not), a
 // damping law, a gain per strike, and the extensions the named effects add (per-strike support
-// damping, per-strike contact durations, doublet splits, a stationary noise floor, a room tail and an
-// attack transient).
+// damping, per-strike contact durations, doublet splits, a stationary noise floor, a room tail, an
+// attack transient and per-strike hit patterns).
 #pragma once
 #include <cstddef>
 #include <string>
 #include <vector>
 
 #include "analysis/audit/gap_metric.hpp"
+#include "analysis/audit/hit_pattern.hpp"
 #include "analysis/audit/mode_matching.hpp"
 #include "analysis/audit/strikes.hpp"
 #include "synthesis/damping_law.hpp"
@@ -40,6 +41,7 @@ struct AuditModel {
   Reverb reverb;                         // reverberation: a white tail, energy relative to each strike's direct sound
   AttackTransient transient;             // residual_transient: a white burst, likewise
   std::size_t transient_pseudo_modes = 0; // ... burst tracks the plain model had taken for modes (dropped)
+  HitPattern hit;                        // hit_position: per-strike amplitude patterns beyond the gain
   std::vector<std::string> effects;      // named, in order
 };
 
@@ -62,6 +64,13 @@ ModalModel strike_model(const AuditModel& model, std::size_t strike);
 
 // Decay of mode n in strike s (law or given decay plus support excess).
 double strike_decay(const AuditModel& model, std::size_t strike, std::size_t mode);
+
+// What strike s does to mode n beyond its gain: hit pattern x |contact factor|.
+double strike_factor(const AuditModel& model, std::size_t strike, std::size_t mode);
+// |Amplitude| of mode n in strike s before the strike gain: shape x strike_factor.
+double amp_before_gain(const AuditModel& model, std::size_t strike, std::size_t mode);
+// ... and with it: what the strike's measured track amplitude is compared with.
+double strike_amp(const AuditModel& model, std::size_t strike, std::size_t mode);
 
 // Bark spectrograms the model predicts for strike s (rendered on the data's grids, plus the expected
 // power of its noises); direct_energy (if given) receives sum(y^2) of the rendered modes.

@@ -50,7 +50,7 @@ ParamSetRecipe augmented_recipe(const AuditData& data, const AuditModel& model, 
   for (std::size_t n = 0; n < model.modes.size(); ++n) {
     const AuditMode& m = model.modes[n];
     if (m.freq_hz >= 0.5 * recipe.sample_rate_hz) continue;
-    const double amp = m.amp * model.gain[s];
+    const double amp = m.amp * model.gain[s] * std::exp(model.hit.log_factor(s, n));  // contact: excitation
     const double e = support ? model.extra_decay_per_s[s][n] : 0.0;
     auto emit = [&](double f, double a) {
       recipe.modes.push_back({f, m.decay_per_s, a, 0.0});

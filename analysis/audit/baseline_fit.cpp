@@ -114,8 +114,7 @@ void fit_amplitudes(AuditModel& model, const AuditData& data, const std::vector<
       for (std::size_t s : strikes) {
         const TrackObservation& o = data.tracks[std::size_t(m.track)].strikes[s];
         if (!o.present) continue;
-        const double tau = model.contact_s.empty() ? 0.0 : model.contact_s[s];
-        sum += std::log(o.amp / (model.gain[s] * contact_gain(tau, strike_decay(model, s, n), m.freq_hz)));
+        sum += std::log(o.amp / (model.gain[s] * strike_factor(model, s, n)));
         ++count;
       }
       if (count > 0) m.amp = std::exp(sum / count);
@@ -140,25 +139,51 @@ AuditModel fit_baseline(const AuditData& data, const std::vector<std::size_t>& s
   return model;
 }
 
-AuditModel baseline_from_model(const ModalModel& given, const AuditData& data) {
+AuditModel baseline_from_model(const ModalModel& given, const AuditData& data,
+                               std::vector<std::size_t>* audit_mode_of_given) {
   AuditModel model;
   model.law_fitted = false;
   model.gain.assign(data.strike_count(), 1.0);
   double matched_energy = 0.0, total_energy = 0.0;
-  std::vector<bool> used(data.tracks.size(), false);
+  std::vector<int> mode_of_track(data.tracks.size(), -1);
+  const MatchOptions same_track;
+  if (audit_mode_of_given) audit_mode_of_given->clear();
   for (const Mode& g : given.modes) {
+    double best = 0.01;
+    int track = -1;
+    for (std::size_t n = 0; n < data.tracks.size(); ++n) {
+      const double rel = std::abs(data.tracks[n].freq_hz - g.freq_hz) / g.freq_hz;
+      if (rel < best) { best = rel; track = int(n); }
+    }
+    // Two of the set's modes that one track holds (a plate's split degenerate pair) are one doublet:
+    // the track's amplitude is the pair's, not either member's.
+    if (track >= 0 && mode_of_track[std::size_t(track)] >= 0) {
+      AuditMode& first = model.modes[std::size_t(mode_of_track[std::size_t(track)])];
+      const double split_hz = std::abs(g.freq_hz - first.freq_hz);
+      if (first.doublet.split_hz == 0.0 &&
+          split_hz <= std::max(same_track.merge_hz, same_track.merge_rel * std::min(g.freq_hz, first.freq_hz))) {
+        const bool upper = g.freq_hz > first.freq_hz;
+        const double lo_amp = upper ? first.amp : std::abs(g.amp), hi_amp = upper ? std::abs(g.amp) : first.amp;
+        first.freq_hz = 0.5 * (first.freq_hz + g.freq_hz);
+        first.decay_per_s = 0.5 * (first.decay_per_s + g.decay_per_s);
+        first.amp = std::hypot(lo_amp, hi_amp);
+        first.doublet = {.split_hz = split_hz, .balance = hi_amp / std::max(lo_amp + hi_amp, 1e-300)};
+        if (audit_mode_of_given) audit_mode_of_given->push_back(std::size_t(mode_of_track[std::size_t(track)]));
+        continue;
+      }
+      track = -1;  // a track stands for one mode of the set
+    }
     AuditMode m;
     m.freq_hz = g.freq_hz;
     m.decay_per_s = g.decay_per_s;
     m.amp = g.amp;
-    double best = 0.01;
-    for (std::size_t n = 0; n < data.tracks.size(); ++n) {
-      const double rel = std::abs(data.tracks[n].freq_hz - g.freq_hz) / g.freq_hz;
-      if (rel < best && !used[n]) { best = rel; m.track = int(n); }
-    }
-    if (m.track >= 0) used[std::size_t(m.track)] = true;
+    m.track = track;
+    if (track >= 0) mode_of_track[std::size_t(track)] = int(model.modes.size());
+    if (audit_mode_of_given) audit_mode_of_given->push_back(model.modes.size());
     model.modes.push_back(m);
   }
+  std::vector<bool> used(data.tracks.size(), false);
+  for (std::size_t n = 0; n < used.size(); ++n) used[n] = mode_of_track[n] >= 0;
   for (std::size_t n = 0; n < data.tracks.size(); ++n)
     for (const TrackObservation& o : data.tracks[n].strikes) {
       total_energy += o.amp * o.amp;

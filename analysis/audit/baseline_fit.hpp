@@ -38,8 +38,11 @@ void apply_law(AuditModel& model);
 AuditModel fit_baseline(const AuditData& data, const std::vector<std::size_t>& strikes);
 
 // A parameter set's modes as the baseline: each mode tied to the nearest track within 1 % (the
-// decays and amplitude shapes stay the set's; only the strike gains are fitted). Throws AuditError
-// when the matched modes carry less than half of the recordings' modal energy.
-AuditModel baseline_from_model(const ModalModel& given, const AuditData& data);
+// decays and amplitude shapes stay the set's; only the strike gains are fitted); two modes one track
+// holds become one doublet mode. audit_mode_of_given (if given) receives each given mode's index in
+// the baseline. Throws AuditError when the matched modes carry less than half of the recordings'
+// modal energy.
+AuditModel baseline_from_model(const ModalModel& given, const AuditData& data,
+                               std::vector<std::size_t>* audit_mode_of_given = nullptr);
 
 }  // namespace ms::audit

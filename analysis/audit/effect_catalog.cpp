@@ -6,7 +6,7 @@ namespace ms::audit {
 
 std::vector<Effect> effect_catalog() {
   return {support_damping_effect(), damping_law_effect(), mode_doublet_effect(), contact_duration_effect(),
-          noise_floor_effect(), reverberation_effect(), residual_transient_effect()};
+          noise_floor_effect(), reverberation_effect(), residual_transient_effect(), hit_position_effect()};
 }
 
 const Effect* find_effect(const std::vector<Effect>& catalog, const std::string& name) {

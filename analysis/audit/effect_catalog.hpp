@@ -24,6 +24,9 @@ struct Effect {
   std::string name;
   std::size_t min_strikes = 1;  // fewer strikes: the effect cannot be tested
   double penalty_db = 0.0;      // complexity penalty on the cross-validated gap improvement
+  // A catch-all whose free per-strike values could also mimic a specific effect: it is named only in a
+  // round where no specific effect's detector passes (the specific explanation goes first).
+  bool generic = false;
   Detection (*detect)(const AuditData& data, const AuditModel& current) = nullptr;
   void (*extend)(const AuditData& data, AuditModel& model, const std::vector<std::size_t>& train) = nullptr;
   void (*adapt)(const AuditData& data, AuditModel& model, std::size_t strike) = nullptr;  // may be null
@@ -37,6 +40,7 @@ Effect contact_duration_effect();
 Effect noise_floor_effect();
 Effect reverberation_effect();
 Effect residual_transient_effect();
+Effect hit_position_effect();
 
 // Every effect, in a fixed order (ties in improvement go to the earlier one).
 std::vector<Effect> effect_catalog();

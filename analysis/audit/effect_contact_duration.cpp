@@ -29,13 +29,12 @@ std::vector<double> tau_grid() {
 double residual_ss(const AuditModel& model, const AuditData& data, std::size_t s, std::size_t* count = nullptr) {
   double ss = 0.0;
   std::size_t k = 0;
-  const double tau = model.contact_s.empty() ? 0.0 : model.contact_s[s];
   for (std::size_t n = 0; n < model.modes.size(); ++n) {
     const AuditMode& m = model.modes[n];
     if (m.track < 0) continue;
     const TrackObservation& o = data.tracks[std::size_t(m.track)].strikes[s];
     if (!o.present) continue;
-    const double pred = m.amp * model.gain[s] * contact_gain(tau, strike_decay(model, s, n), m.freq_hz);
+    const double pred = strike_amp(model, s, n);
     // Huber loss beyond 8.7 dB: a mode near a zero of the contact's spectrum must not dominate.
     const double r = std::abs(std::log(o.amp / pred));
     ss += r < 1.0 ? r * r : 2.0 * r - 1.0;

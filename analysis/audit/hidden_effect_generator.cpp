@@ -16,7 +16,7 @@ namespace ms::audit {
 
 std::vector<std::string> hideable_effects() {
   return {"support_damping",    "damping_law", "mode_doublet", "contact_duration", "noise_floor", "reverberation",
-          "residual_transient"};
+          "residual_transient", "hit_position"};
 }
 
 namespace {
@@ -95,7 +95,17 @@ struct EffectParameters {
   double noise_below_db = 110.0;      // under the hardest strike's strongest mode
   Reverb reverb;
   AttackTransient transient;
+  // hit_position: mode n's shape sin(k_n x + theta_n) (k_n x in radians, x a fraction of the object's
+  // length), struck at x_s per strike; amplitudes relative to the shape at the nominal hit x = 0.5.
+  std::vector<double> hit_wavenumber, hit_phase, strike_hit;
 };
+
+// Mode n's amplitude at hit x relative to the nominal hit; a node keeps a tenth of an antinode's
+// amplitude (the strike is not a point), so no mode disappears.
+double hit_shape_factor(const EffectParameters& e, std::size_t n, double x) {
+  const auto shape = [&](double at) { return 0.1 + std::abs(std::sin(e.hit_wavenumber[n] * at + e.hit_phase[n])); };
+  return shape(x) / shape(0.5);
+}
 
 // mode_doublet: 1-2 of the slower-decaying modes below 3 kHz split by 1.5-4.5 Hz.
 void draw_doublets(std::mt19937_64& rng, double u, const ModalModel& object, EffectParameters& e, std::string& summary) {
@@ -152,6 +162,19 @@ EffectParameters draw_effects(std::mt19937_64& rng, const std::vector<std::strin
     e.transient = {-30.0 + 15.0 * strength("residual_transient"), 3.0 + 7.0 * U(rng2), 0, true};
     hc.summary += printed("; transient %.1f ms at %.1f dB", e.transient.duration_ms, e.transient.level_db);
   }
+  // hit_position: flexural shapes, k_n = 4.73 sqrt(f_n / f_1) (a free bar's first root, k ~ sqrt(f));
+  // strikes within 0.5 -+ (0.02 .. 0.1) of the length (a hand moving a few millimetres to centimetres).
+  // A stream of its own.
+  if (hidden("hit_position")) {
+    std::mt19937_64 rng3(hc.seed * 6364136223846793005ULL + 1442695040888963407ULL);
+    const double f1 = hc.object.modes.front().freq_hz, half_width = 0.02 + 0.08 * strength("hit_position");
+    for (const Mode& m : hc.object.modes) {
+      e.hit_wavenumber.push_back(4.73 * std::sqrt(m.freq_hz / f1));
+      e.hit_phase.push_back(2.0 * std::numbers::pi * U(rng3));
+    }
+    for (std::size_t s = 0; s < hc.strike_gain.size(); ++s) e.strike_hit.push_back(0.5 + half_width * (2.0 * U(rng3) - 1.0));
+    hc.summary += printed("; hit points 0.5 -+ %.2f of the length", half_width);
+  }
   return e;
 }
 
@@ -173,6 +196,7 @@ ModalModel strike_modes(const HiddenCase& hc, std::size_t s, double scale, const
   for (std::size_t n = 0; n < hc.object.modes.size(); ++n) {
     Mode mode = hc.object.modes[n];
     mode.amp *= scale * hc.strike_gain[s];
+    if (!e.strike_hit.empty()) mode.amp *= hit_shape_factor(e, n, e.strike_hit[s]);
     if (opt.amplitude_jitter_db > 0.0) mode.amp *= std::pow(10.0, opt.amplitude_jitter_db * jitter(jitter_rng) / 20.0);
     if (e.support_mean_per_s > 0.0) mode.decay_per_s += hold * e.support_mean_per_s * draws.exponential(draws.rng);
     if (std::find(e.doublets.begin(), e.doublets.end(), n) != e.doublets.end()) {

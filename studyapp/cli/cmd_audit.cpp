@@ -215,7 +215,10 @@ void register_audit(CLI::App& app) {
     try {
       const audit::AuditData data = audit::make_audit_data(recordings, options);
       std::optional<ModalModel> model;
-      if (given) model = audit::given_model(*given, opt->model, data.measured.sample_rate_hz);
+      if (given) {
+        model = audit::given_model(*given, opt->model, data.measured.sample_rate_hz);
+        options.object_shapes = audit::object_shapes(opt->model, *model, data.measured.sample_rate_hz);
+      }
       const AuditResult r = audit::run_audit(data, model, options);
       const nlohmann::json j = result_json(r, data);
       if (!opt->report.empty()) write_report(opt->report, r, data, j);

@@ -22,6 +22,7 @@ void register_audit_generate(CLI::App& app) {
     std::vector<double> strengths;
     std::size_t strikes = 5;
     double duration_s = 1.5;
+    double jitter_db = 0.0;
     std::string output;
   };
   auto opt = std::make_shared<Options>();
@@ -32,6 +33,10 @@ void register_audit_generate(CLI::App& app) {
       ->delimiter(',');
   cmd->add_option("--strikes", opt->strikes, "Number of strikes (default 5)")->check(CLI::Range(1, 50));
   cmd->add_option("--duration-s", opt->duration_s, "Seconds per strike (default 1.5)")->check(CLI::Range(0.3, 30.0));
+  cmd->add_option("--jitter-db", opt->jitter_db,
+                  "Strikes that move: every mode's amplitude in every strike off by this many dB (standard "
+                  "deviation, independent per mode and strike; default 0)")
+      ->check(CLI::Range(0.0, 20.0));
   cmd->add_option("-o,--output", opt->output, "Folder for strikeN.wav and hidden.json")->required();
   cmd->callback([opt] {
     std::vector<double> strengths = opt->strengths;
@@ -45,6 +50,7 @@ void register_audit_generate(CLI::App& app) {
     audit::GeneratorOptions g;
     g.strikes = opt->strikes;
     g.duration_s = opt->duration_s;
+    g.amplitude_jitter_db = opt->jitter_db;
     audit::HiddenCase hc;
     try {
       hc = audit::generate_hidden_case(opt->seed, opt->effects, strengths, g);

@@ -1,0 +1,363 @@
+// hit_position: strikes that move. Where a strike lands sets how strongly each mode sounds (the mode
+// shape at the hit point), so the modes' amplitudes change from strike to strike by more than a gain,
+// in a pattern the modes share. Detector: on the modes' log-amplitude residuals (measured / model), with
+// each strike's gain and smooth spectral tilt taken out (a contact's brightness is not a hit point),
+// a pattern fitted on the other strikes predicts half of a held-out strike's modes from the other half
+// better than a gain alone, by enough (bi-cross-validation; rank 0 wins on independent per-mode scatter,
+// which no model can predict). Extension: with an object's mode shapes (a bar or plate parameter set),
+// a hit position per strike; without, a low-rank pattern (loadings per mode fitted on the training
+// strikes, rank chosen by the same bi-cross-validation, a weight per strike its latent value).
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <random>
+
+#include "analysis/audit/baseline_fit.hpp"
+#include "analysis/audit/effect_catalog.hpp"
+
+namespace ms::audit {
+
+namespace {
+
+constexpr double kWithinDb = 40.0;       // modes this far below the strongest carry the pattern; fainter: noise
+constexpr std::size_t kMaxRank = 3;      // patterns beyond three are not hit points but scatter
+constexpr double kMinImprovementDb = 0.5;  // held-out-half RMS improvement over a gain alone, dB
+constexpr double kDbPerNeper = 8.685889638065035;
+
+// The modes' log-amplitude residuals ln(measured / model without a hit pattern) on the strikes given:
+// rows strikes, columns the modes present in all of them and within kWithinDb of the strongest.
+struct Residuals {
+  std::vector<std::size_t> strikes, modes;
+  Eigen::MatrixXd ln;
+};
+
+Residuals residuals(const AuditData& data, const AuditModel& model, const std::vector<std::size_t>& strikes) {
+  AuditModel plain = model;
+  plain.hit.loading.clear();
+  plain.hit.coord.clear();
+  plain.hit.strike_position.clear();
+  Residuals r;
+  r.strikes = strikes;
+  double strongest = 0.0;
+  for (const AuditMode& m : model.modes)
+    if (m.track >= 0)
+      for (std::size_t s : strikes) strongest = std::max(strongest, data.tracks[std::size_t(m.track)].strikes[s].amp);
+  for (std::size_t n = 0; n < model.modes.size(); ++n) {
+    const AuditMode& m = model.modes[n];
+    if (m.track < 0 || m.amp <= 0.0) continue;
+    bool all = true;
+    double loudest = 0.0;
+    for (std::size_t s : strikes) {
+      const TrackObservation& o = data.tracks[std::size_t(m.track)].strikes[s];
+      all &= o.present && o.amp > 0.0;
+      loudest = std::max(loudest, o.amp);
+    }
+    if (all && 20.0 * std::log10(loudest / strongest) >= -kWithinDb) r.modes.push_back(n);
+  }
+  r.ln.resize(Eigen::Index(strikes.size()), Eigen::Index(r.modes.size()));
+  for (std::size_t i = 0; i < strikes.size(); ++i)
+    for (std::size_t j = 0; j < r.modes.size(); ++j) {
+      const std::size_t n = r.modes[j];
+      const TrackObservation& o = data.tracks[std::size_t(model.modes[n].track)].strikes[strikes[i]];
+      r.ln(Eigen::Index(i), Eigen::Index(j)) = std::log(o.amp / strike_amp(plain, strikes[i], n));
+    }
+  return r;
+}
+
+// Each strike's smooth spectral tilt (1, log f, log^2 f) taken out of its row.
+Eigen::MatrixXd without_tilt(const Eigen::MatrixXd& ln, const AuditModel& model, const std::vector<std::size_t>& modes) {
+  Eigen::MatrixXd basis(ln.cols(), 3);
+  for (Eigen::Index j = 0; j < ln.cols(); ++j) {
+    const double x = std::log(model.modes[modes[std::size_t(j)]].freq_hz / 1000.0);
+    basis.row(j) << 1.0, x, x * x;
+  }
+  const Eigen::MatrixXd projector = basis * basis.completeOrthogonalDecomposition().pseudoInverse();
+  return ln - ln * projector.transpose();
+}
+
+// Halves of a strike's modes for bi-cross-validation: four different splits (alternate modes, alternate
+// pairs, alternate pairs shifted, a fixed scramble), so that no one split's luck decides.
+constexpr int kSplits = 4;
+bool in_first_half(Eigen::Index j, int split) {
+  switch (split) {
+    case 0: return j % 2 == 0;
+    case 1: return (j / 2) % 2 == 0;
+    case 2: return ((j + 1) / 2) % 2 == 0;
+    default: return ((j * 2654435761u) >> 7) % 2 == 0;
+  }
+}
+
+// The first `rank` pattern loadings (columns) of rows whose per-mode mean is taken out.
+Eigen::MatrixXd loadings(const Eigen::MatrixXd& centred, std::size_t rank) {
+  if (rank == 0 || centred.rows() == 0) return Eigen::MatrixXd(centred.cols(), 0);
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(centred, Eigen::ComputeThinV);
+  return svd.matrixV().leftCols(Eigen::Index(std::min<std::size_t>(rank, std::size_t(svd.matrixV().cols()))));
+}
+
+// Gain + weights of the loadings fitted on the modes `fit`, least squares; the fitted coefficients.
+Eigen::VectorXd fit_row(const Eigen::VectorXd& x, const Eigen::MatrixXd& load, const std::vector<Eigen::Index>& fit) {
+  Eigen::MatrixXd a(Eigen::Index(fit.size()), load.cols() + 1);
+  Eigen::VectorXd b(Eigen::Index(fit.size()));
+  for (std::size_t i = 0; i < fit.size(); ++i) {
+    a(Eigen::Index(i), 0) = 1.0;
+    a.row(Eigen::Index(i)).tail(load.cols()) = load.row(fit[i]);
+    b(Eigen::Index(i)) = x(fit[i]);
+  }
+  return a.colPivHouseholderQr().solve(b);
+}
+
+// Mean squared error (natural-log units) of predicting each held-out strike's modes of one half from
+// the other half with a rank-`rank` pattern learnt on the other strikes (bi-cross-validation).
+double held_out_half_mse(const Eigen::MatrixXd& ln, std::size_t rank) {
+  const Eigen::Index strikes = ln.rows(), modes = ln.cols();
+  double sse = 0.0;
+  std::size_t count = 0;
+  for (Eigen::Index k = 0; k < strikes; ++k) {
+    Eigen::MatrixXd train(strikes - 1, modes);
+    for (Eigen::Index s = 0, i = 0; s < strikes; ++s)
+      if (s != k) train.row(i++) = ln.row(s);
+    const Eigen::RowVectorXd shape = train.colwise().mean();
+    Eigen::MatrixXd centred = train.rowwise() - shape;
+    centred = centred.colwise() - centred.rowwise().mean();
+    const Eigen::MatrixXd load = loadings(centred, rank);
+    const Eigen::VectorXd x = (ln.row(k) - shape).transpose();
+    for (int half = 0; half < 2 * kSplits; ++half) {
+      std::vector<Eigen::Index> fit, predict;
+      for (Eigen::Index j = 0; j < modes; ++j) (in_first_half(j, half / 2) == (half % 2 == 0) ? fit : predict).push_back(j);
+      if (fit.size() < std::size_t(load.cols()) + 2 || predict.empty()) continue;
+      const Eigen::VectorXd c = fit_row(x, load, fit);
+      for (Eigen::Index j : predict) {
+        const double e = x(j) - c(0) - load.row(j).dot(c.tail(load.cols()));
+        sse += e * e;
+        ++count;
+      }
+    }
+  }
+  return count ? sse / double(count) : 0.0;
+}
+
+// The least-squares gain and position (row of `shapes`; none when it has no rows) of a strike's
+// residual row x on the modes `fit` (the set's amplitudes stay: no per-mode mean is taken out).
+struct Placed {
+  Eigen::Index position = -1;
+  double gain = 0.0;
+};
+
+// Huber loss beyond 8.7 dB: a mode near a node of the shape (or a badly measured faint one) must not
+// decide where the strike landed.
+double huber(double e) { return std::abs(e) < 1.0 ? e * e : 2.0 * std::abs(e) - 1.0; }
+
+Placed place(const Eigen::VectorXd& x, const Eigen::MatrixXd& shapes, const std::vector<Eigen::Index>& fit) {
+  Placed best;
+  double best_loss = std::numeric_limits<double>::infinity();
+  std::vector<double> d(fit.size());
+  for (Eigen::Index p = shapes.rows() > 0 ? 0 : -1; p < shapes.rows(); ++p) {
+    for (std::size_t i = 0; i < fit.size(); ++i) d[i] = x(fit[i]) - (p >= 0 ? shapes(p, fit[i]) : 0.0);
+    const double gain = median(d);
+    double loss = 0.0;
+    for (double v : d) loss += huber(v - gain);
+    if (loss < best_loss) {
+      best_loss = loss;
+      best = {p, gain};
+    }
+    if (p < 0) break;
+  }
+  return best;
+}
+
+// Hit positions: each strike's position and gain chosen on one half of its modes predict the other
+// half (nothing is learnt from the other strikes: the object's shapes are given). No shapes: a gain alone.
+double held_out_half_mse_object(const Eigen::MatrixXd& ln, const Eigen::MatrixXd& shapes) {
+  double sse = 0.0;
+  std::size_t count = 0;
+  for (Eigen::Index k = 0; k < ln.rows(); ++k) {
+    const Eigen::VectorXd x = ln.row(k).transpose();
+    for (int half = 0; half < 2 * kSplits; ++half) {
+      std::vector<Eigen::Index> fit, predict;
+      for (Eigen::Index j = 0; j < ln.cols(); ++j) (in_first_half(j, half / 2) == (half % 2 == 0) ? fit : predict).push_back(j);
+      if (fit.size() < 2 || predict.empty()) continue;
+      const Placed at = place(x, shapes, fit);
+      for (Eigen::Index j : predict) {
+        const double e = x(j) - at.gain - (at.position >= 0 ? shapes(at.position, j) : 0.0);
+        sse += e * e;
+        ++count;
+      }
+    }
+  }
+  return count ? sse / double(count) : 0.0;
+}
+
+struct PatternChoice {
+  std::size_t rank = 0;
+  double gain_only_rms = 0.0, pattern_rms = 0.0;  // held-out-half RMS, natural-log units
+};
+
+// The rank with the smallest held-out-half error (0: a gain alone), up to what the strikes and modes allow.
+PatternChoice choose_rank(const Eigen::MatrixXd& ln) {
+  PatternChoice c;
+  c.gain_only_rms = c.pattern_rms = std::sqrt(held_out_half_mse(ln, 0));
+  const std::size_t most = std::min({kMaxRank, std::size_t(std::max<Eigen::Index>(ln.rows() - 2, 0)),
+                                     std::size_t(std::max<Eigen::Index>(ln.cols() / 2 - 2, 0))});
+  for (std::size_t r = 1; r <= most; ++r)
+    if (const double rms = std::sqrt(held_out_half_mse(ln, r)); rms < c.pattern_rms) c = {r, c.gain_only_rms, rms};
+  return c;
+}
+
+// What the best pattern gains on the same residuals with every strike's modes shuffled among
+// themselves (the largest of kShuffles draws): a pattern shared by the strikes is gone, each strike's
+// own scatter stays. A shared pattern must predict better than any of these.
+constexpr int kShuffles = 39;  // a shared pattern beats all of them: p < 1/40 under independent scatter
+double scatter_improvement_db(const Eigen::MatrixXd& ln) {
+  Eigen::MatrixXd centred = ln.rowwise() - ln.colwise().mean();
+  centred = centred.colwise() - centred.rowwise().mean();
+  std::mt19937_64 rng(0x5ca77e4ULL);
+  double most = 0.0;
+  std::vector<double> row(std::size_t(ln.cols()));
+  for (int i = 0; i < kShuffles; ++i) {
+    Eigen::MatrixXd shuffled = centred;
+    for (Eigen::Index s = 0; s < shuffled.rows(); ++s) {
+      for (Eigen::Index j = 0; j < shuffled.cols(); ++j) row[std::size_t(j)] = shuffled(s, j);
+      std::shuffle(row.begin(), row.end(), rng);
+      for (Eigen::Index j = 0; j < shuffled.cols(); ++j) shuffled(s, j) = row[std::size_t(j)];
+    }
+    const PatternChoice c = choose_rank(shuffled);
+    most = std::max(most, kDbPerNeper * (c.gain_only_rms - c.pattern_rms));
+  }
+  return most;
+}
+
+// The object's shapes on the residual's modes: positions x modes.
+Eigen::MatrixXd shapes_on(const AuditModel& model, const std::vector<std::size_t>& modes) {
+  Eigen::MatrixXd m(Eigen::Index(model.hit.positions.size()), Eigen::Index(modes.size()));
+  for (std::size_t p = 0; p < model.hit.positions.size(); ++p)
+    for (std::size_t j = 0; j < modes.size(); ++j) m(Eigen::Index(p), Eigen::Index(j)) = model.hit.shape_ln[p][modes[j]];
+  return m;
+}
+
+void clear_pattern(HitPattern& hit) {
+  hit.loading.clear();
+  hit.coord.clear();
+  hit.strike_position.clear();
+}
+
+void refit_shapes_and_gains(const AuditData& data, AuditModel& model, const std::vector<std::size_t>& train) {
+  if (model.law_fitted) fit_amplitudes(model, data, train);
+  else for (std::size_t s : train) fit_gain(model, data, s);
+}
+
+constexpr std::size_t kMinModes = 8;  // fewer: no pattern can be told from scatter
+
+void extend(const AuditData& data, AuditModel& model, const std::vector<std::size_t>& train) {
+  clear_pattern(model.hit);
+  const Residuals r = residuals(data, model, train);
+  if (r.modes.size() < kMinModes) return;
+  if (model.hit.from_object()) {
+    const Eigen::MatrixXd shapes = shapes_on(model, r.modes);
+    std::vector<Eigen::Index> every(std::size_t(r.ln.cols()));
+    for (std::size_t j = 0; j < every.size(); ++j) every[j] = Eigen::Index(j);
+    model.hit.strike_position.assign(data.strike_count(), model.hit.home_position);
+    for (std::size_t i = 0; i < train.size(); ++i)
+      model.hit.strike_position[train[i]] = std::size_t(place(r.ln.row(Eigen::Index(i)).transpose(), shapes, every).position);
+  } else {
+    const std::size_t rank = choose_rank(r.ln).rank;
+    if (rank == 0) return;
+    Eigen::MatrixXd centred = r.ln.rowwise() - r.ln.colwise().mean();
+    centred = centred.colwise() - centred.rowwise().mean();
+    const Eigen::MatrixXd load = loadings(centred, rank);
+    model.hit.loading.assign(model.modes.size(), std::vector<double>(std::size_t(load.cols()), 0.0));
+    for (std::size_t j = 0; j < r.modes.size(); ++j)
+      for (Eigen::Index k = 0; k < load.cols(); ++k) model.hit.loading[r.modes[j]][std::size_t(k)] = load(Eigen::Index(j), k);
+    model.hit.coord.assign(data.strike_count(), std::vector<double>(std::size_t(load.cols()), 0.0));
+    for (std::size_t i = 0; i < train.size(); ++i) {
+      const Eigen::RowVectorXd w = centred.row(Eigen::Index(i)) * load;
+      model.hit.coord[train[i]].assign(w.data(), w.data() + w.size());
+    }
+  }
+  refit_shapes_and_gains(data, model, train);
+}
+
+// A held-out strike: its position (object) or pattern weights, fitted with its gain on its own modes.
+void adapt(const AuditData& data, AuditModel& model, std::size_t s) {
+  if (!model.hit.active()) return;
+  const Residuals r = residuals(data, model, {s});
+  if (r.modes.empty()) return;
+  const Eigen::VectorXd x = r.ln.row(0).transpose();
+  std::vector<Eigen::Index> every(r.modes.size());
+  for (std::size_t j = 0; j < every.size(); ++j) every[j] = Eigen::Index(j);
+  if (model.hit.from_object()) {
+    model.hit.strike_position[s] = std::size_t(place(x, shapes_on(model, r.modes), every).position);
+    return;
+  }
+  Eigen::MatrixXd load(Eigen::Index(r.modes.size()), Eigen::Index(model.hit.rank()));
+  for (std::size_t j = 0; j < r.modes.size(); ++j)
+    for (std::size_t k = 0; k < model.hit.rank(); ++k) load(Eigen::Index(j), Eigen::Index(k)) = model.hit.loading[r.modes[j]][k];
+  const Eigen::VectorXd c = fit_row(x, load, every);
+  model.hit.coord[s].assign(c.data() + 1, c.data() + c.size());
+}
+
+Detection detect(const AuditData& data, const AuditModel& current) {
+  Detection d;
+  const Residuals r = residuals(data, current, all_strikes(data));
+  if (r.modes.size() < kMinModes) {
+    d.evidence = "too few modes sound in every strike (" + std::to_string(r.modes.size()) + ") to tell a pattern from scatter";
+    return d;
+  }
+  PatternChoice c;
+  if (current.hit.from_object()) {
+    c.gain_only_rms = std::sqrt(held_out_half_mse_object(r.ln, Eigen::MatrixXd(0, r.ln.cols())));
+    c.pattern_rms = std::sqrt(held_out_half_mse_object(r.ln, shapes_on(current, r.modes)));
+    c.rank = c.pattern_rms < c.gain_only_rms ? 1 : 0;
+  } else {
+    c = choose_rank(without_tilt(r.ln, current, r.modes));
+  }
+  d.statistic = kDbPerNeper * (c.gain_only_rms - c.pattern_rms);
+  const double null_db = current.hit.from_object() ? 0.0 : scatter_improvement_db(without_tilt(r.ln, current, r.modes));
+  d.passes = c.rank >= 1 && d.statistic >= kMinImprovementDb && d.statistic > null_db &&
+             data.strike_variation_db >= kMinStrikeVariationDb;
+  char buf[400];
+  std::snprintf(buf, sizeof buf,
+                "the modes' amplitudes change from strike to strike by more than a gain and a spectral tilt, in %s "
+                "the strikes share: fitted on half of a held-out strike's %zu modes it predicts the other half to "
+                "%.2f dB RMS instead of %.2f dB with a gain alone (shuffled modes: at most %.2f dB better)",
+                current.hit.from_object() ? "the pattern of the object's mode shapes at a moving hit point"
+                                          : (c.rank == 1 ? "one pattern" : (std::to_string(c.rank) + " patterns").c_str()),
+                r.modes.size(), kDbPerNeper * c.pattern_rms, kDbPerNeper * c.gain_only_rms, null_db);
+  d.evidence = buf;
+  return d;
+}
+
+Parameters parameters(const AuditData& data, const AuditModel& model) {
+  double ss = 0.0;
+  std::size_t n = 0;
+  for (std::size_t s = 0; s < data.strike_count(); ++s)
+    for (std::size_t m = 0; m < model.modes.size(); ++m)
+      if (model.modes[m].track >= 0) {
+        const double l = kDbPerNeper * model.hit.log_factor(s, m);
+        ss += l * l;
+        ++n;
+      }
+  Parameters p{{"pattern_rms_db", n ? std::sqrt(ss / double(n)) : 0.0}};
+  if (model.hit.from_object()) {
+    double lo = 1.0, hi = 0.0;
+    for (std::size_t i : model.hit.strike_position) {
+      lo = std::min(lo, model.hit.positions[i]);
+      hi = std::max(hi, model.hit.positions[i]);
+    }
+    p.push_back({"position_min", lo});
+    p.push_back({"position_max", hi});
+  } else {
+    p.push_back({"rank", double(model.hit.rank())});
+  }
+  return p;
+}
+
+}  // namespace
+
+Effect hit_position_effect() {
+  return {.name = "hit_position", .min_strikes = 4, .penalty_db = 0.05, .generic = true,
+          .detect = detect, .extend = extend, .adapt = adapt, .parameters = parameters};
+}
+
+}  // namespace ms::audit
