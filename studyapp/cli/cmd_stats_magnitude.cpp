@@ -1,5 +1,6 @@
 // modalstudy stats magnitude: magnitude estimation of dissimilarity (analysis/magnitude_estimation.hpp)
-// and its metric SMACOF map.
+// and its metric SMACOF map; with --vs REF, the difference to one reference token per token instead
+// (van den Doel et al. 2002, Fig. 4: analysis/difference_curve.hpp).
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
@@ -7,6 +8,7 @@
 #include <iostream>
 #include <optional>
 
+#include "analysis/stats/difference_curve.hpp"
 #include "analysis/stats/magnitude_estimation.hpp"
 #include "analysis/stats/mds.hpp"
 #include "studyapp/cli/stats_commands.hpp"
@@ -16,6 +18,35 @@
 #include "synthesis/csv.hpp"
 
 namespace ms::cli {
+
+namespace {
+
+// Fig. 4: per token the mean (over listeners) difference to the reference; -o writes the curve.
+void print_difference_curve(const std::vector<DifferencePoint>& curve, const std::string& reference, double offset,
+                            const std::string& x, const std::string& output, bool json) {
+  if (!output.empty()) {
+    std::string csv = csv::line({x.empty() ? "x" : x, "token", "listeners", "difference", "sd"});
+    for (const auto& p : curve)
+      csv += csv::line({p.x.empty() ? "NA" : p.x, p.token, std::to_string(p.listeners), fmt("%.17g", p.mean), fmt("%.17g", p.sd)});
+    write_file_atomically(output, csv);
+  }
+  if (json) {
+    nlohmann::json points = nlohmann::json::array();
+    for (const auto& p : curve)
+      points.push_back({{"token", p.token}, {"x", p.x.empty() ? nlohmann::json() : nlohmann::json(p.x)},
+                        {"listeners", p.listeners}, {"difference", num_json(p.mean)}, {"sd", num_json(p.sd)}});
+    std::cout << nlohmann::json{{"reference", reference}, {"offset", offset}, {"points", points}}.dump() << "\n";
+    return;
+  }
+  std::printf("difference to '%s' (each listener's mean rating of the pair %+g, then the mean over listeners)\n",
+              reference.c_str(), offset);
+  std::printf("%-10s %-20s %9s %10s %8s\n", x.empty() ? "x" : x.c_str(), "token", "listeners", "difference", "sd");
+  for (const auto& p : curve)
+    std::printf("%-10s %-20s %9zu %10.3f %8s\n", p.x.empty() ? "-" : p.x.c_str(), p.token.c_str(), p.listeners, p.mean,
+                fmt("%.3f", p.sd).c_str());
+}
+
+}  // namespace
 
 // The modulus pair and value: the options when given, else the export's modulus columns (one pair
 // and one value for all rows used); modulus_a/modulus_b are set to the pair used.
@@ -54,6 +85,8 @@ void register_stats_magnitude(CLI::App& group) {
   struct Options {
     std::string data, subject = "subject", first = "a", second = "b", rating = "rating", modulus_a, modulus_b, output;
     double modulus_value = 0;  // 0: from the table's modulus_value column, else 10
+    std::string vs, x;         // --vs: the difference curve to this token instead of the map
+    double offset = 0;
     int dims = 2, starts = 3;
     std::uint64_t seed = 1;
     bool json = false;
@@ -84,12 +117,30 @@ void register_stats_magnitude(CLI::App& group) {
       ->check(CLI::Range(0, 1000))
       ->capture_default_str();
   cmd->add_option("--seed", opt->seed, "Seed of the random starts")->capture_default_str();
-  cmd->add_option("-o,--output", opt->output, "Write the dissimilarity matrix as square CSV (input of `stats mds`)");
+  cmd->add_option("--vs", opt->vs,
+                  "Instead of the map: each token's mean rated difference to this token (the 2002 study's Fig. 4: "
+                  "--vs the real sound --offset -1 --x modes), raw ratings, mean per listener then over listeners");
+  cmd->add_option("--offset", opt->offset,
+                  "With --vs: added to every rating (-1 puts a 1-10 scale with 1 = identical on Fig. 4's 0-9)")
+      ->capture_default_str();
+  cmd->add_option("--x", opt->x,
+                  "With --vs: column giving each token's x value (e.g. modes, a design factor), read from the row "
+                  "where the token is rated against itself");
+  cmd->add_option("-o,--output", opt->output,
+                  "Write the dissimilarity matrix as square CSV (input of `stats mds`); with --vs the curve "
+                  "(x, token, listeners, difference, sd)");
   cmd->add_flag("--json", opt->json, "Print one JSON object");
   cmd->callback([opt, in] {
     if (opt->modulus_a.empty() != opt->modulus_b.empty())
       throw InputError(SourceLocation{}, "--modulus-a and --modulus-b go together: give both tokens of the modulus pair");
     const TidyCsv table = read_stats_table(opt->data, *in);
+    if (opt->vs.empty() && (!opt->x.empty() || opt->offset != 0))
+      throw InputError(SourceLocation{}, "--x and --offset belong to --vs (the difference to one token)");
+    if (!opt->vs.empty()) {
+      const MagnitudeColumns columns{opt->subject, opt->first, opt->second, opt->rating};
+      return print_difference_curve(difference_to_reference(table, columns, opt->vs, opt->offset, opt->x), opt->vs,
+                                    opt->offset, opt->x, opt->output, opt->json);
+    }
     const MagnitudeOptions mo = magnitude_options(table, opt->modulus_a, opt->modulus_b, opt->modulus_value);
     const MagnitudeEstimation m =
         magnitude_estimation(table, {opt->subject, opt->first, opt->second, opt->rating}, mo);

@@ -12,8 +12,11 @@ void register_stats_bs1116(CLI::App& group);
 void register_stats_ab(CLI::App& group);
 void register_stats_staircase(CLI::App& group);
 void register_stats_limits(CLI::App& group);
+void register_stats_tokens(CLI::App& group);
+void register_stats_changepoint(CLI::App& group);
 void register_stats_mds(CLI::App& group);
 void register_stats_magnitude(CLI::App& group);
 void register_stats_reference_error(CLI::App& group);
+void register_stats_adjust(CLI::App& group);
 
 }  // namespace ms::cli

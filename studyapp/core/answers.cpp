@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <limits>
 
+#include "analysis/stats/token_series.hpp"
+
 namespace ms {
 
 using nlohmann::json;
@@ -99,6 +101,16 @@ void to_json(json& j, const LimitsAnswer& a) {
   for (bool d : a.different) j["responses"].push_back(d ? "different" : "same");
   j["threshold"] = a.threshold ? json(*a.threshold) : json(nullptr);
 }
+void to_json(json& j, const TokensAnswer& a) {
+  TokenSeries series(a.from, a.to);
+  j = json{{"from", a.from}, {"to", a.to}, {"responses", json::array()}};
+  for (bool d : a.different) {
+    j["responses"].push_back(d ? "different" : "same");
+    series.record(d);
+  }
+  j["distinguished"] = series.distinguished();
+}
+void to_json(json& j, const ChangepointAnswer& a) { j = json{{"marks", a.marks}}; }
 void to_json(json& j, const Answer& a) {
   std::visit([&](const auto& x) { to_json(j, x); }, a);
 }
@@ -191,6 +203,39 @@ void from_json(const json& j, LimitsAnswer& a) {
     if (a.different[i]) throw AnswerError("a series ends at its first \"different\" (trial " + std::to_string(i + 1) + ")");
   if (!j["threshold"].is_null()) a.threshold = j["threshold"].get<double>();
 }
+void from_json(const json& j, TokensAnswer& a) {
+  const auto whole = [](const json& v) { return v.is_number_integer() && v.get<long long>() >= 1 && v.get<long long>() <= 100000; };
+  if (!j.is_object() || j.size() != 4 || !j.contains("from") || !whole(j["from"]) || !j.contains("to") ||
+      !whole(j["to"]) || !j.contains("responses") || !j["responses"].is_array() || !j.contains("distinguished") ||
+      !j["distinguished"].is_array())
+    throw AnswerError("expected {\"from\":K,\"to\":k,\"responses\":[...],\"distinguished\":[...]}");
+  a = TokensAnswer{j["from"].get<int>(), j["to"].get<int>(), {}};
+  if (!(a.from > a.to)) throw AnswerError("a token series runs from more modes to fewer: from " + j["from"].dump() + ", to " + j["to"].dump());
+  for (const json& r : j["responses"]) a.different.push_back(one_of(r, {"same", "different"}) == "different");
+  if (a.different.size() != std::size_t(a.from - a.to))
+    throw AnswerError("a token series compares every token below the first once: " + std::to_string(a.from - a.to) +
+                      " responses from " + j["from"].dump() + " to " + j["to"].dump() + ", got " +
+                      std::to_string(a.different.size()));
+  TokenSeries series(a.from, a.to);
+  for (bool d : a.different) series.record(d);
+  if (j["distinguished"] != json(series.distinguished()))
+    throw AnswerError("\"distinguished\" must be the references the responses lead to, " +
+                      json(series.distinguished()).dump() + ", got " + j["distinguished"].dump());
+}
+void from_json(const json& j, ChangepointAnswer& a) {
+  if (!j.is_object() || j.size() != 1 || !j.contains("marks") || !j["marks"].is_array())
+    throw AnswerError("expected {\"marks\":[position, ...]}, got " + j.dump());
+  a = ChangepointAnswer{};
+  for (const json& m : j["marks"]) {
+    if (!m.is_number_integer() || m.get<long long>() < 0 || m.get<long long>() > 100000)
+      throw AnswerError("a mark is a sound's position in the sweep (0, 1, ...), got " + m.dump());
+    const auto at = std::size_t(m.get<long long>());
+    if (at == 0) throw AnswerError("the first sound cannot be marked: there is nothing before it to change from");
+    if (!a.marks.empty() && at <= a.marks.back())
+      throw AnswerError("marks rise and are distinct, got " + m.dump() + " after " + std::to_string(a.marks.back()));
+    a.marks.push_back(at);
+  }
+}
 void from_json(const json& j, QuestionnaireAnswer& a) {
   a.answers = object_of<std::string>(j, "text (or one of the question's options)", [](const json& x) {
     return x.is_string() ? std::optional(x.get<std::string>()) : std::nullopt;
@@ -218,6 +263,8 @@ Answer read_stored_answer(const std::string& block_type, const json& v) {
   if (block_type == "questionnaire") return get_as<QuestionnaireAnswer>(v);
   if (block_type == "bs1116") return get_as<Bs1116Answer>(v);
   if (block_type == "limits") return get_as<LimitsAnswer>(v);
+  if (block_type == "tokens") return get_as<TokensAnswer>(v);
+  if (block_type == "changepoint") return get_as<ChangepointAnswer>(v);
   throw AnswerError("no answer format for block type '" + block_type + "'");
 }
 
@@ -281,6 +328,21 @@ Answer read_answer(const Block& block, const Trial& trial, const json& v) {
       auto a = get_as<LimitsAnswer>(v);
       if (a.parameter != l.parameter) throw AnswerError("the series varies '" + a.parameter + "', the block '" + l.parameter + "'");
       if (a.levels.empty()) throw AnswerError("a series has at least one trial");
+      return a;
+    }
+    case BlockType::tokens: {
+      const auto& t = std::get<TokensBlock>(block.body);
+      auto a = get_as<TokensAnswer>(v);
+      if (a.from != t.from || a.to != t.to)
+        throw AnswerError("the series runs from " + std::to_string(a.from) + " to " + std::to_string(a.to) +
+                          " modes, the block from " + std::to_string(t.from) + " to " + std::to_string(t.to));
+      return a;
+    }
+    case BlockType::changepoint: {
+      auto a = get_as<ChangepointAnswer>(v);
+      if (!a.marks.empty() && a.marks.back() >= trial.stimuli.size())
+        throw AnswerError("mark " + std::to_string(a.marks.back()) + " is past the sweep's " +
+                          std::to_string(trial.stimuli.size()) + " sounds");
       return a;
     }
     case BlockType::questionnaire: {

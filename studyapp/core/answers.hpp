@@ -13,6 +13,11 @@
 //                  "threshold": number|null}; answers stored before the choice was kept have no "chosen"
 //   limits         {"parameter": key, "levels": [...], "responses": ["same"|"different", ...],
 //                  "threshold": number|null}: one descending series, levels falling
+//   tokens         {"from": K, "to": k, "responses": ["same"|"different", ...], "distinguished": [K, ...]}:
+//                  one adaptive token series, one response per comparison (from - to of them, the
+//                  comparison falling from from - 1 to `to`), the distinguished tokens as the rule gives them
+//   changepoint    {"marks": [i, ...]}: the 0-based positions in the sweep of the sounds marked as a change
+//                  of material, rising, never 0 (the first sound has nothing before it); may be empty
 //   questionnaire  {"<question id>": "text or option", ...}
 //   bs1116         {"<stimulus>": 1.0..5.0, ...} for A and B (the hidden reference under its own name)
 // The views, the simulated listener and the session write answers through these types; the export, the
@@ -68,6 +73,14 @@ struct LimitsAnswer {
   std::vector<bool> different;
   std::optional<double> threshold;
 };
+// A whole adaptive token series (analysis/stats/token_series.hpp): whether each comparison was heard as
+// different, in order; the tokens compared and the references follow from from, to and the answers.
+struct TokensAnswer {
+  int from = 0, to = 1;
+  std::vector<bool> different;
+};
+// The sounds of a sweep marked as where the material changed (0-based, rising, > 0).
+struct ChangepointAnswer { std::vector<std::size_t> marks; };
 struct QuestionnaireAnswer { std::map<std::string, std::string> answers; };  // question id -> text
 // BS.1116 impairment grades, 5.0 imperceptible ... 1.0 very annoying.
 struct Bs1116Answer { std::map<std::string, double> grades; };  // stimulus -> 1.0..5.0
@@ -75,7 +88,7 @@ inline constexpr double kBs1116GradeMin = 1.0, kBs1116GradeMax = 5.0;
 
 using Answer = std::variant<InstructionsAnswer, SameDifferentAnswer, ChoiceAnswer, BipolarAnswer, MushraAnswer,
                             MagnitudeAnswer, IdentifyAnswer, RatingAnswer, AdjustAnswer, StaircaseAnswer,
-                            QuestionnaireAnswer, Bs1116Answer, LimitsAnswer>;
+                            QuestionnaireAnswer, Bs1116Answer, LimitsAnswer, TokensAnswer, ChangepointAnswer>;
 
 // The stored JSON of each type (nlohmann's to_json/from_json; from_json throws AnswerError).
 void to_json(nlohmann::json& j, const InstructionsAnswer& a);
@@ -91,6 +104,8 @@ void to_json(nlohmann::json& j, const StaircaseAnswer& a);
 void to_json(nlohmann::json& j, const QuestionnaireAnswer& a);
 void to_json(nlohmann::json& j, const Bs1116Answer& a);
 void to_json(nlohmann::json& j, const LimitsAnswer& a);
+void to_json(nlohmann::json& j, const TokensAnswer& a);
+void to_json(nlohmann::json& j, const ChangepointAnswer& a);
 void to_json(nlohmann::json& j, const Answer& a);
 void from_json(const nlohmann::json& j, InstructionsAnswer& a);
 void from_json(const nlohmann::json& j, SameDifferentAnswer& a);
@@ -105,6 +120,8 @@ void from_json(const nlohmann::json& j, StaircaseAnswer& a);
 void from_json(const nlohmann::json& j, QuestionnaireAnswer& a);
 void from_json(const nlohmann::json& j, Bs1116Answer& a);
 void from_json(const nlohmann::json& j, LimitsAnswer& a);
+void from_json(const nlohmann::json& j, TokensAnswer& a);
+void from_json(const nlohmann::json& j, ChangepointAnswer& a);
 
 // A MUSHRA score as stored: a whole score (the slider's) as an integer, else the number.
 nlohmann::json mushra_score_json(double score);

@@ -79,6 +79,16 @@ AutopilotSummary run_autopilot(const AutopilotOptions& o, const std::function<vo
       }
       continue;
     }
+    if (const auto* t = std::get_if<TokensBlock>(&block.body)) {
+      TokenSeries& series = session.tokens();
+      const bool different = listener.tokens_different(*t, series.reference(), series.comparison());
+      session.log_event(EventKind::play, trial.stimuli.front(), unix_now_ms());
+      if (!session.tokens_step(different, 1500.0, unix_now_ms())) {  // the last token compared: the trial is answered
+        ++summary.answered_now;
+        if (log) log("answered " + trial.block_id + " (token series)");
+      }
+      continue;
+    }
     const SimulatedAnswer a = listener.answer(block, trial);
     for (const auto& name : trial.stimuli) session.log_event(EventKind::play, name, unix_now_ms());
     const nlohmann::json value = a.value;

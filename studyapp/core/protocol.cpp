@@ -8,7 +8,8 @@ namespace ms {
 const std::vector<std::string>& block_type_names() {
   static const std::vector<std::string> names{"instructions", "ab",       "mushra",    "magnitude",
                                               "identify",     "rating",   "adjust",    "staircase",
-                                              "questionnaire", "bs1116",   "limits"};
+                                              "questionnaire", "bs1116",   "limits",    "tokens",
+                                              "changepoint"};
   return names;
 }
 
@@ -65,6 +66,9 @@ std::vector<StimulusRef> Block::referenced() const {
     out.push_back(l->stimulus);
     if (l->reference) out.push_back(*l->reference);
   }
+  if (const auto* t = std::get_if<TokensBlock>(&body)) out.push_back(t->stimulus);
+  if (const auto* c = std::get_if<ChangepointBlock>(&body))
+    for (const auto& sweep : c->sweeps) out.insert(out.end(), sweep.begin(), sweep.end());
   return out;
 }
 

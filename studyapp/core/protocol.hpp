@@ -41,7 +41,7 @@ struct StimulusSource {
 };
 
 enum class BlockType { instructions, ab, mushra, magnitude, identify, rating, adjust, staircase,
-                       questionnaire, bs1116, limits, unknown };
+                       questionnaire, bs1116, limits, tokens, changepoint, unknown };
 const std::vector<std::string>& block_type_names();  // in enum order, without "unknown"
 std::string to_string(BlockType t);
 
@@ -125,6 +125,27 @@ struct LimitsBlock {
   std::optional<double> floor;
   SourceLocation floor_where;
 };
+// The adaptive token procedure of van den Doel et al. 2002, Exp. 2 (analysis/stats/token_series.hpp):
+// the token of K modes is `stimulus` (a parameter set whose `prune:` orders its modes) with prune.keep
+// = K, for K = from, from - 1, ..., to; each step plays the current reference token, then the next
+// token, and asks whether they differ. One series per trial, `repeats` series per block.
+struct TokensBlock {
+  StimulusRef stimulus;
+  int from = 0, to = 1;                  // from > to >= 1
+  SourceLocation from_where, to_where;
+};
+inline constexpr const char* kTokenParameter = "prune.keep";
+// A change-point judgement over fixed-order sweeps (Skandalou & Ireland 2017, Exp. 3): each sweep is
+// one trial playing its sounds in the written order, the swept parameter rising or falling through
+// `values` (one per sound, the same for every sweep); the listener marks the sounds at which the
+// material changed (zero or more, never the first: nothing comes before it). Sweeps are trials: their
+// order is randomised with the block's `randomize`, the order within a sweep never.
+struct ChangepointBlock {
+  std::string parameter;                 // the swept quantity's name, as exported (e.g. Q)
+  std::vector<double> values;
+  SourceLocation values_where;
+  std::vector<std::vector<StimulusRef>> sweeps;
+};
 struct Question {
   std::string id, text;
   std::vector<std::string> options;  // empty: free text
@@ -140,7 +161,7 @@ struct Bs1116Block {
 
 using BlockBody = std::variant<std::monostate, InstructionsBlock, AbBlock, MushraBlock, MagnitudeBlock,
                                IdentifyBlock, RatingBlock, AdjustBlock, StaircaseBlock, QuestionnaireBlock,
-                               Bs1116Block, LimitsBlock>;
+                               Bs1116Block, LimitsBlock, TokensBlock, ChangepointBlock>;
 
 struct Block {
   BlockType type = BlockType::unknown;

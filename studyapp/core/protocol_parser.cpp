@@ -320,6 +320,56 @@ LimitsBlock parse_limits(const YamlReader& r, const YAML::Node& n, const std::st
   return l;
 }
 
+TokensBlock parse_tokens(const YamlReader& r, const YAML::Node& n, const std::string& p, const Block& b) {
+  r.check_keys(n, p, {"type", "id", "randomize", "training", "shuffle", "break_after", "repeats", "stimulus",
+                      "from", "to", "listen_all", "prompt"});
+  TokensBlock t;
+  t.stimulus = ref(r, required(r, n, p, b, "stimulus"), p + ".stimulus");
+  t.from = count(r, required(r, n, p, b, "from"), p + ".from", 2, 100000);
+  t.from_where = r.where(n["from"], p + ".from");
+  if (n["to"]) {
+    t.to = count(r, n["to"], p + ".to", 1, 100000);
+    t.to_where = r.where(n["to"], p + ".to");
+    if (t.to >= t.from) r.fail(n["to"], p + ".to", "must lie below from (" + n["from"].Scalar() + "): the tokens lose modes");
+  }
+  return t;
+}
+
+// Sweeps share `values`, one per sound in playing order, strictly rising or strictly falling.
+ChangepointBlock parse_changepoint(const YamlReader& r, const YAML::Node& n, const std::string& p, const Block& b) {
+  r.check_keys(n, p, {"type", "id", "randomize", "training", "shuffle", "break_after", "repeats", "parameter",
+                      "values", "sweeps", "listen_all", "prompt"});
+  ChangepointBlock c;
+  c.parameter = r.text(required(r, n, p, b, "parameter"), p + ".parameter");
+  if (c.parameter.empty()) r.fail(n["parameter"], p + ".parameter", "names the swept quantity (e.g. Q); got nothing");
+  const YAML::Node v = required(r, n, p, b, "values");
+  c.values = r.numbers(v, p + ".values");
+  c.values_where = r.where(v, p + ".values");
+  if (c.values.size() < 3)
+    r.fail(v, p + ".values", "a sweep needs at least 3 sounds (a change point lies between neighbours), got " +
+                                 std::to_string(c.values.size()));
+  const bool rising = c.values[1] > c.values[0];
+  for (std::size_t i = 1; i < c.values.size(); ++i)
+    if (rising ? !(c.values[i] > c.values[i - 1]) : !(c.values[i] < c.values[i - 1]))
+      r.fail(v[i], idx(p + ".values", i), std::string("the values must ") + (rising ? "rise" : "fall") +
+                                              " all the way (a sweep is monotone): " + v[i].Scalar() + " after " +
+                                              v[i - 1].Scalar());
+  const YAML::Node sw = required(r, n, p, b, "sweeps");
+  if (!sw.IsSequence() || sw.size() == 0) r.fail(sw, p + ".sweeps", "expected a list of sweeps [[sound, ...], ...]");
+  for (std::size_t i = 0; i < sw.size(); ++i) {
+    const std::string sp = idx(p + ".sweeps", i);
+    std::vector<StimulusRef> sweep = refs(r, sw[i], sp);
+    if (sweep.size() != c.values.size())
+      r.fail(sw[i], sp, "has " + std::to_string(sweep.size()) + " sounds but 'values' has " +
+                            std::to_string(c.values.size()) + " (one value per sound, in playing order)");
+    for (std::size_t k = 1; k < sweep.size(); ++k)
+      for (std::size_t j = 0; j < k; ++j)
+        if (sweep[k].name == sweep[j].name) r.fail(sw[i][k], idx(sp, k), "plays '" + sweep[k].name + "' twice");
+    c.sweeps.push_back(std::move(sweep));
+  }
+  return c;
+}
+
 QuestionnaireBlock parse_questionnaire(const YamlReader& r, const YAML::Node& n, const std::string& p) {
   r.check_keys(n, p, {"type", "id", "randomize", "training", "shuffle", "break_after", "questions", "prompt"});
   QuestionnaireBlock q;
@@ -355,6 +405,8 @@ BlockBody parse_body(const YamlReader& r, const YAML::Node& n, const std::string
     case BlockType::questionnaire: return parse_questionnaire(r, n, p);
     case BlockType::bs1116: return parse_bs1116(r, n, p);
     case BlockType::limits: return parse_limits(r, n, p, b);
+    case BlockType::tokens: return parse_tokens(r, n, p, b);
+    case BlockType::changepoint: return parse_changepoint(r, n, p, b);
     case BlockType::unknown: break;
   }
   return std::monostate{};

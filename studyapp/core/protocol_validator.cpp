@@ -76,6 +76,41 @@ struct Checker {
     }
   }
 
+  // Blocks that set a key of their stimulus live need a parameter set.
+  void paramset_only(const StimulusRef& stim, const std::string& who) {
+    const auto* s = p.find_stimulus(stim.name);
+    if (s && s->kind != StimulusKind::paramset)
+      problems.push_back(at(stim.where, who + "stimulus '" + s->name + "' is not a parameter set"));
+  }
+
+  // A token keeps the first K modes of the stimulus's pruning order: the stimulus needs a `prune:`, and
+  // `from` may not exceed what it keeps (above that every token would be the same sound).
+  void tokens(const TokensBlock& t, const std::string& who) {
+    const auto it = loaded.find(t.stimulus.name);
+    if (it == loaded.end()) return;
+    const StimulusSource& s = *p.find_stimulus(t.stimulus.name);
+    auto overrides = s.overrides;
+    overrides.push_back(std::string(kTokenParameter) + "=" + std::to_string(t.from));
+    try {
+      const std::size_t before = load_paramset(it->second.string(), s.overrides, &confinement).modes_before_pruning;
+      if (before == 0) {
+        problems.push_back(at(t.stimulus.where, who + "stimulus '" + s.name + "' has no 'prune:' ordering its modes; "
+                                                      "a token keeps its first K modes of that order (e.g. prune: "
+                                                      "{method: naive})"));
+        return;
+      }
+      const std::size_t kept = load_paramset(it->second.string(), overrides, &confinement).model.modes.size();
+      if (kept < std::size_t(t.from))
+        problems.push_back(at(t.from_where, who + "'from' is " + std::to_string(t.from) + " but stimulus '" + s.name +
+                                                "' keeps only " + std::to_string(kept) + " modes after its pruning (" +
+                                                std::to_string(before) + " before): tokens above " +
+                                                std::to_string(kept) + " would all be the same sound"));
+    } catch (const InputError& e) {
+      problems.push_back(at(t.from_where, who + "'" + kTokenParameter + "' = " + std::to_string(t.from) +
+                                              " on stimulus '" + s.name + "': " + e.problem()));
+    }
+  }
+
   void derived(const StimulusSource& s) {
     if (s.implicit) return;  // its reference is checked where the MUSHRA block names it
     if (!p.find_stimulus(s.derive_from.name)) {
@@ -160,24 +195,22 @@ struct Checker {
     }
     if (const auto* a = std::get_if<AdjustBlock>(&b.body)) {
       if (a->sliders.empty()) empty("no sliders");
-      const auto* s = p.find_stimulus(a->paramset.name);
-      if (s && s->kind != StimulusKind::paramset)
-        problems.push_back(at(a->paramset.where, who + "stimulus '" + s->name + "' is not a parameter set"));
+      paramset_only(a->paramset, who);
       for (const auto& sl : a->sliders)
         for (double v : {sl.min, sl.max}) setting(a->paramset, sl.key, v, sl.where, who);
     }
     if (const auto* s = std::get_if<StaircaseBlock>(&b.body)) {
-      const auto* st = p.find_stimulus(s->stimulus.name);
-      if (st && st->kind != StimulusKind::paramset)
-        problems.push_back(at(s->stimulus.where, who + "stimulus '" + st->name + "' is not a parameter set"));
+      paramset_only(s->stimulus, who);
       setting(s->stimulus, s->parameter, s->start, s->parameter_where, who);
     }
     if (const auto* l = std::get_if<LimitsBlock>(&b.body)) {
-      const auto* st = p.find_stimulus(l->stimulus.name);
-      if (st && st->kind != StimulusKind::paramset)
-        problems.push_back(at(l->stimulus.where, who + "stimulus '" + st->name + "' is not a parameter set"));
+      paramset_only(l->stimulus, who);
       setting(l->stimulus, l->parameter, l->start, l->parameter_where, who);
       if (l->floor) setting(l->stimulus, l->parameter, *l->floor, l->floor_where, who);
+    }
+    if (const auto* t = std::get_if<TokensBlock>(&b.body)) {
+      paramset_only(t->stimulus, who);
+      tokens(*t, who);
     }
     if (const auto* q = std::get_if<QuestionnaireBlock>(&b.body); q && q->questions.empty()) empty("no questions");
   }

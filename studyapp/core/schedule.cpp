@@ -135,6 +135,18 @@ std::vector<Trial> block_trials(const Block& b, std::size_t block_index, std::mt
     // One trial per series (the block's repeats); the series descends at run time. Stimuli: stimulus, reference.
     add_single_trials(out, proto, {l->stimulus}, b.repeats);
     for (auto& t : out) t.stimuli.push_back(l->reference ? l->reference->name : l->stimulus.name);
+  } else if (const auto* tk = std::get_if<TokensBlock>(&b.body)) {
+    // One trial per series; the tokens compared are chosen at run time. Its stimulus: the one pruned.
+    add_single_trials(out, proto, {tk->stimulus}, b.repeats);
+  } else if (const auto* cp = std::get_if<ChangepointBlock>(&b.body)) {
+    // One trial per sweep and repeat, its sounds in the written order (only the trials are shuffled).
+    for (int rep = 0; rep < b.repeats; ++rep)
+      for (const auto& sweep : cp->sweeps) {
+        Trial t = proto;
+        t.repeat = static_cast<std::size_t>(rep);
+        for (const auto& sound : sweep) t.stimuli.push_back(sound.name);
+        out.push_back(t);
+      }
   } else {
     out.push_back(proto);  // instructions, questionnaire: one screen
   }

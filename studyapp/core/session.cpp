@@ -91,12 +91,17 @@ Session::Session(const Protocol& protocol, const std::string& protocol_text, con
       }
     if (!all_chosen) track_chosen_.clear();
   }
-  if (!finished() && current().type == BlockType::limits) {
-    limits();  // an interrupted series continues after its committed steps
+  if (!finished() && (current().type == BlockType::limits || current().type == BlockType::tokens)) {
+    // An interrupted series continues after its committed steps.
+    const bool limits_trial = current().type == BlockType::limits;
+    if (limits_trial) limits();
+    else tokens();
     for (const auto& e : store_->events(session_, position_of(current())))
       if (e.kind == EventKind::step) {
         const auto d = nlohmann::json::parse(e.detail_json);
-        series_->record(d.at("response").get<SameDifferentAnswer>().different);
+        const bool different = d.at("response").get<SameDifferentAnswer>().different;
+        if (limits_trial) series_->record(different);
+        else token_series_->record(different);
         track_rt_ms_ += d.value("rt_ms", 0.0);
         ++track_plays_;
       }
@@ -195,9 +200,35 @@ bool Session::limits_step(bool different, double rt_ms, std::int64_t now_ms) {
   return false;
 }
 
+TokenSeries& Session::tokens() {
+  const auto* t = std::get_if<TokensBlock>(&current_block().body);
+  if (!t) throw std::logic_error("Session::tokens: the current trial is not a token series");
+  if (!token_series_) token_series_.emplace(t->from, t->to);
+  return *token_series_;
+}
+
+bool Session::tokens_step(bool different, double rt_ms, std::int64_t now_ms) {
+  TokenSeries& series = tokens();
+  const auto* t = std::get_if<TokensBlock>(&current_block().body);
+  const nlohmann::json detail{{"step", series.different().size()}, {"reference", series.reference()},
+                              {"comparison", series.comparison()}, {"response", SameDifferentAnswer{different}},
+                              {"rt_ms", rt_ms}};
+  store_->record_event(session_, {position_of(current()), EventKind::step, t->stimulus.name, now_ms, detail.dump()});
+  series.record(different);
+  track_rt_ms_ += rt_ms;
+  ++track_plays_;
+  if (!series.finished()) return true;
+  const TokensAnswer value{series.from(), series.to(), series.different()};
+  const double rt = track_rt_ms_;
+  const int plays = track_plays_;
+  answer(value, rt, plays, now_ms);
+  return false;
+}
+
 void Session::advance() {
   track_.reset();
   series_.reset();
+  token_series_.reset();
   track_chosen_.clear();
   track_plays_ = 0;
   track_rt_ms_ = 0.0;

@@ -4,7 +4,8 @@
 // Staircase trials run their track inside the trial: core draws which interval holds the comparison
 // and scores the listener's choice; each step is committed as a "step" event, so a track interrupted
 // by a crash continues where it stopped, with the same draws. Method-of-limits trials run one descending
-// series inside the trial the same way (each "same"/"different" a "step" event). While a Session object lives it holds the
+// series inside the trial the same way (each "same"/"different" a "step" event), and token trials one adaptive
+// token series (each comparison a "step" event). While a Session object lives it holds the
 // session's lease (the process's LeaseKeeper renews it), so no other process can answer for the participant.
 #pragma once
 #include <cstdint>
@@ -19,6 +20,7 @@
 #include "studyapp/core/protocol.hpp"
 #include "studyapp/core/results_store.hpp"
 #include "studyapp/core/schedule.hpp"
+#include "analysis/stats/token_series.hpp"
 #include "studyapp/core/descending_series.hpp"
 #include "studyapp/core/staircase_track.hpp"
 
@@ -89,6 +91,13 @@ class Session {
   // the series goes on in this trial.
   bool limits_step(bool different, double rt_ms, std::int64_t now_ms);
 
+  // Token trials: the live series of the current trial (rebuilt from stored steps on resume); its
+  // reference() and comparison() are the two tokens (prune.keep) the next step plays.
+  TokenSeries& tokens();
+  // Commits the answer to the comparison as a step and, after the last token, answers the trial with
+  // the whole series and advances. Returns whether the series goes on in this trial.
+  bool tokens_step(bool different, double rt_ms, std::int64_t now_ms);
+
   // Marks the session finished in the store (done automatically after the last answer).
   void finish(std::int64_t now_ms);
 
@@ -105,6 +114,7 @@ class Session {
   bool at_break_ = false;
   std::optional<StaircaseTrack> track_;
   std::optional<DescendingSeries> series_;
+  std::optional<TokenSeries> token_series_;
   std::vector<AbInterval> track_chosen_;  // per step; empty when a resumed track's early steps lack it
   int track_plays_ = 0;
   double track_rt_ms_ = 0.0;

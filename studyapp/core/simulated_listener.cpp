@@ -61,10 +61,13 @@ double SimulatedListener::noisy(double d) {
   return std::max(0.0, d + n(rng_));
 }
 
+const PerceptualProfile& SimulatedListener::profile_with(const std::string& stimulus, const std::string& key, double value) {
+  const std::vector<std::string> set{key + "=" + format_number(value)};
+  return profile(cache_.hash_with(stimulus, set), cache_.samples_with(stimulus, set));
+}
+
 AbInterval SimulatedListener::staircase_choice(const StaircaseBlock& block, double level, AbInterval comparison) {
-  const std::vector<std::string> set{block.parameter + "=" + format_number(level)};
-  const PerceptualProfile& cmp =
-      profile(cache_.hash_with(block.stimulus.name, set), cache_.samples_with(block.stimulus.name, set));
+  const PerceptualProfile& cmp = profile_with(block.stimulus.name, block.parameter, level);
   const PerceptualProfile ref = profile(block.reference ? block.reference->name : block.stimulus.name);
   const double d = perceptual_distance_db(ref, cmp);
   // 2-interval psychometric function: chance 50 %, 75 % correct at 1.5 dB.
@@ -74,11 +77,29 @@ AbInterval SimulatedListener::staircase_choice(const StaircaseBlock& block, doub
 }
 
 bool SimulatedListener::limits_different(const LimitsBlock& block, double level) {
-  const std::vector<std::string> set{block.parameter + "=" + format_number(level)};
-  const PerceptualProfile& cmp =
-      profile(cache_.hash_with(block.stimulus.name, set), cache_.samples_with(block.stimulus.name, set));
+  const PerceptualProfile& cmp = profile_with(block.stimulus.name, block.parameter, level);
   const PerceptualProfile ref = profile(block.reference ? block.reference->name : block.stimulus.name);
   return noisy(perceptual_distance_db(ref, cmp)) > 1.0;  // answer_ab's same/different criterion
+}
+
+bool SimulatedListener::tokens_different(const TokensBlock& block, int reference, int comparison) {
+  const PerceptualProfile& ref = profile_with(block.stimulus.name, kTokenParameter, reference);
+  const PerceptualProfile& cmp = profile_with(block.stimulus.name, kTokenParameter, comparison);
+  return noisy(perceptual_distance_db(ref, cmp)) > 1.0;  // answer_ab's same/different criterion
+}
+
+// A change is marked where a sound differs from the one before it by more than the same/different
+// criterion: the listener hears the sweep in order and notes each audible step.
+SimulatedAnswer SimulatedListener::answer_changepoint(const Trial& trial, UnitNormal& unit) {
+  ChangepointAnswer marks;
+  double hardest = 1e9;
+  for (std::size_t i = 1; i < trial.stimuli.size(); ++i) {
+    const double d = noisy(distance_db(trial.stimuli[i - 1], trial.stimuli[i]));
+    hardest = std::min(hardest, std::abs(d - 1.0));
+    if (d > 1.0) marks.marks.push_back(i);
+  }
+  const auto n = trial.stimuli.size();
+  return {marks, 1500.0 * double(n) + reaction_ms(hardest, unit), int(n)};
 }
 
 double SimulatedListener::reaction_ms(double distance_db, UnitNormal& unit) {
@@ -227,8 +248,11 @@ SimulatedAnswer SimulatedListener::answer(const Block& block, const Trial& trial
       return answer_adjust(std::get<AdjustBlock>(block.body));
     case BlockType::questionnaire:
       return {questionnaire_answer(std::get<QuestionnaireBlock>(block.body)), 5000.0, 0};
+    case BlockType::changepoint:
+      return answer_changepoint(trial, unit);
     case BlockType::staircase:  // answered step by step through staircase_choice
     case BlockType::limits:     // answered step by step through limits_different
+    case BlockType::tokens:     // answered step by step through tokens_different
     case BlockType::unknown:
       break;
   }

@@ -35,11 +35,16 @@ class SimulatedListener {
   // One method-of-limits trial with the comparison at `level`: does the listener hear a change from
   // the reference? (the same rule as a same/different A/B trial)
   bool limits_different(const LimitsBlock& block, double level);
+  // One step of a token series: does the listener hear the token of `comparison` modes differ from the
+  // reference token of `reference` modes? (the same rule)
+  bool tokens_different(const TokensBlock& block, int reference, int comparison);
   double distance_db(const std::string& a, const std::string& b);  // between named stimuli
 
  private:
   const PerceptualProfile& profile(const std::string& key, const Samples& samples);
   const PerceptualProfile& profile(const std::string& name);
+  // `stimulus` with parameter-set key `key` at `value` (a level, a token's modes), rendered through the cache.
+  const PerceptualProfile& profile_with(const std::string& stimulus, const std::string& key, double value);
   double noisy(double d);
 
   // One answer's standard-normal draws share one distribution (it hands out its values in pairs), so
@@ -54,6 +59,7 @@ class SimulatedListener {
   SimulatedAnswer answer_identify(const IdentifyBlock& block, const Trial& trial, UnitNormal& unit);
   SimulatedAnswer answer_rating(const RatingBlock& block, const Trial& trial, UnitNormal& unit);
   SimulatedAnswer answer_adjust(const AdjustBlock& block);
+  SimulatedAnswer answer_changepoint(const Trial& trial, UnitNormal& unit);
 
   StimulusCache& cache_;
   std::mt19937_64 rng_;

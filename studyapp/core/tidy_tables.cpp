@@ -7,6 +7,7 @@
 #include <cmath>
 #include <optional>
 
+#include "analysis/stats/token_series.hpp"
 #include "studyapp/core/answers.hpp"
 #include "studyapp/core/response_format.hpp"
 #include "studyapp/core/staircase_track.hpp"
@@ -63,6 +64,21 @@ std::vector<std::vector<std::string>> limits_rows(const LimitsAnswer& a, const s
   return rows;
 }
 
+// One row per comparison of a token series, in order: the reference's and the comparison's number of
+// modes, the answer, and the series' summary (distinguished tokens and the ceiling, the number of tokens),
+// so `stats tokens` reads Table 2 from the rows alone.
+std::vector<std::vector<std::string>> tokens_rows(const TokensAnswer& a, const std::string& stimulus) {
+  TokenSeries series(a.from, a.to);
+  for (bool d : a.different) series.record(d);
+  const std::vector<int> comparisons = series.comparisons();
+  const std::string distinguished = std::to_string(series.distinguished().size()), tokens = std::to_string(series.tokens());
+  std::vector<std::vector<std::string>> rows;
+  for (std::size_t i = 0; i < a.different.size(); ++i)
+    rows.push_back({stimulus, std::to_string(i), std::to_string(series.references()[i]), std::to_string(comparisons[i]),
+                    a.different[i] ? "different" : "same", a.different[i] ? "1" : "0", distinguished, tokens});
+  return rows;
+}
+
 // The answer in the written order: a bipolar score negated, a chosen letter exchanged, when swapped.
 std::string oriented_cell(const Answer& answer, bool swapped) {
   if (const auto* bipolar = std::get_if<BipolarAnswer>(&answer)) return std::to_string(swapped ? -bipolar->score : bipolar->score);
@@ -100,6 +116,8 @@ const std::map<std::string, std::vector<std::string>>& type_columns() {
       {"adjust", {"stimulus", "key", "value", "plays", "rt_ms"}},
       {"staircase", {"stimulus", "parameter", "step", "level", "next_level", "correct", "threshold"}},  // + chosen
       {"limits", {"stimulus", "reference", "parameter", "step", "level", "response", "different", "threshold", "censored"}},
+      {"tokens", {"stimulus", "step", "reference", "comparison", "response", "different", "distinguished", "tokens"}},
+      {"changepoint", {"stimulus", "parameter", "position", "value", "marked", "marks"}},
       {"questionnaire", {"question", "answer"}},
       {"bs1116", {"condition", "reference", "hidden_reference", "condition_grade", "reference_grade", "diffgrade"}}};
   return c;
@@ -244,6 +262,19 @@ std::map<std::string, std::string> tidy_tables(const std::vector<ResponseRow>& r
       for (std::vector<std::string>& row : staircase_rows(*track, sb, at(0), staircase_choices)) add(std::move(row), at(0));
     } else if (const auto* series = std::get_if<LimitsAnswer>(&answer)) {
       for (std::vector<std::string>& row : limits_rows(*series, at(0), at(1))) add(std::move(row), at(0));
+    } else if (const auto* tokens = std::get_if<TokensAnswer>(&answer)) {
+      for (std::vector<std::string>& row : tokens_rows(*tokens, at(0))) add(std::move(row), at(0));
+    } else if (const auto* change = std::get_if<ChangepointAnswer>(&answer)) {
+      // One row per sound of the sweep, marked or not, so a sweep without marks still counts as heard.
+      const auto* cb = block ? std::get_if<ChangepointBlock>(&block->body) : nullptr;
+      const auto& marks = change->marks;
+      for (std::size_t i = 0; i < s.size(); ++i) {
+        const bool marked = std::find(marks.begin(), marks.end(), i) != marks.end();
+        add({at(i), cb ? cb->parameter : "NA", std::to_string(i),
+             cb && i < cb->values.size() ? csv::number(cb->values[i]) : "NA", marked ? "1" : "0",
+             std::to_string(marks.size())},
+            at(i));
+      }
     } else if (const auto* bs = std::get_if<Bs1116Answer>(&answer)) {
       // Which of A and B was the hidden reference comes from the block (the stored trial names both).
       const auto* tb = block ? std::get_if<Bs1116Block>(&block->body) : nullptr;

@@ -1,6 +1,7 @@
 // Per-block-type tidy tables made from the stored responses, one row per observation, in the column
 // names the `modalstudy stats` commands read by default (mushra.csv: participant, trial, condition,
-// rating; identify.csv: stimulus, truth, response, correct; staircase.csv: one row per step; limits.csv: one row per trial of a series; ...).
+// rating; identify.csv: stimulus, truth, response, correct; staircase.csv: one row per step; limits.csv: one row per trial of a series;
+// tokens.csv: one row per comparison of a token series; changepoint.csv: one row per sound of a sweep; ...).
 // The protocol of each study adds what the responses alone do not say: the identification truth,
 // the stimuli's design factors (one column each), the modulus of magnitude blocks and where a
 // staircase moved after its last answer.

@@ -1,11 +1,12 @@
-// The part the staircase and method-of-limits views share: a trial of steps, each playing the
+// The part the staircase, method-of-limits and token views share: a trial of steps, each playing the
 // reference and then the stimulus with one parameter at the session's level (rendered on a worker,
-// the play buttons off until it is ready), a button that plays them in order, and a choice cleared
-// for every step. Each view places the sounds (staircase: reference, A, B; limits: reference, comparison).
+// the play buttons off until it is ready; for tokens the reference is the stimulus at a level too), a
+// button that plays them in order, and a choice cleared for every step. Each view places the sounds
+// (staircase: reference, A, B; limits and tokens: reference, comparison).
 #pragma once
-#include <QTimer>
-
 #include <functional>
+#include <memory>
+#include <optional>
 #include <string>
 
 #include "studyapp/gui/async_render.hpp"
@@ -25,21 +26,30 @@ class LevelSeriesView : public TrialView {
  protected:
   bool ready() const override { return comparison_ready_ && choices_->checkedId() >= 0; }
 
-  // The "play in order" button over `count` sounds (400 ms between them).
-  void add_sequence_button(const QString& text, int count) {
-    auto* sequence = new QPushButton(text, body());
-    sequence->setObjectName("play-sequence");
-    connect(sequence, &QPushButton::clicked, this, [this] { play_sequence(0); });
-    layout_->addWidget(sequence);
-    connect(&controller_, &StudyController::playingChanged, this, [this, count](bool playing) {
-      if (!playing && sequence_next_ > 0 && sequence_next_ < count)
-        QTimer::singleShot(400, this, [this] { play_sequence(sequence_next_); });
-    });
+  bool sequence_playable() const override { return comparison_ready_; }
+
+  // The step's widgets: the task, the play-in-order button, one play button per sound (silent
+  // placeholders until the first step is rendered), the choices, the step line and Next.
+  void add_step_widgets(const QString& prompt, const QString& sequence, const QStringList& sounds,
+                        const QStringList& choice_labels, const QStringList& choice_names, std::function<void()> on_next) {
+    add_prompt(prompt);
+    std::vector<Sound> placeholders;
+    for (const QString& label : sounds) placeholders.push_back(Sound{label.toStdString(), reference_});
+    controller_.set_sounds(std::move(placeholders));
+    add_sequence_button(sequence, int(sounds.size()));
+    add_sound_buttons(sounds, false);
+    choices_ = add_choices(choice_labels, choice_names);
+    step_label_ = new QLabel(body());
+    step_label_->setObjectName("step");
+    layout_->addWidget(step_label_);
+    add_next_action(std::move(on_next), "Next");
   }
 
   // A new step at `level`: the choice cleared, the sounds off until place(reference, comparison) ran.
-  void start_level(double level, std::size_t sounds,
-                   std::function<std::vector<Sound>(const Sound&, const Sound&)> place) {
+  // With `reference_level` (token series) the reference is the stimulus at that level too, not the
+  // block's fixed reference; both are rendered before the step is playable.
+  void start_level(double level, std::size_t sounds, std::function<std::vector<Sound>(const Sound&, const Sound&)> place,
+                   std::optional<double> reference_level = std::nullopt) {
     comparison_ready_ = false;
     if (QAbstractButton* b = choices_->checkedButton()) {
       choices_->setExclusive(false);
@@ -48,22 +58,38 @@ class LevelSeriesView : public TrialView {
     }
     for (std::size_t i = 0; i < sounds; ++i) play_button(i)->setEnabled(false);
     if (!controller_.has_session() || controller_.previewing()) return;
-    const std::string set = override_text(parameter_, level);
-    render_async(controller_.cache(), stimulus_, {set}, this,
-                 [this, set, sounds, place](Samples samples, double, const std::string& error) {
-                   if (!error.empty()) return step_label_->setText(QString::fromStdString("cannot render: " + error));
-                   controller_.set_sounds(place(Sound{reference_name_, reference_}, Sound{stimulus_ + "@" + set, samples}));
-                   comparison_ready_ = true;
-                   for (std::size_t i = 0; i < sounds; ++i) play_button(i)->setEnabled(true);
-                   refresh();
-                 });
+    struct Pending {
+      int left = 1;
+      Sound reference, comparison;
+    };
+    auto step = std::make_shared<Pending>();
+    step->reference = Sound{reference_name_, reference_};
+    const auto one_done = [this, step, sounds, place] {
+      if (--step->left > 0) return;
+      controller_.set_sounds(place(step->reference, step->comparison));
+      comparison_ready_ = true;
+      for (std::size_t i = 0; i < sounds; ++i) play_button(i)->setEnabled(true);
+      refresh();
+    };
+    const auto render = [this, one_done](double at, Sound Pending::*into, std::shared_ptr<Pending> pending) {
+      const std::string set = override_text(parameter_, at);
+      render_async(controller_.cache(), stimulus_, {set}, this,
+                   [this, set, into, pending, one_done](Samples samples, double, const std::string& error) {
+                     if (!error.empty()) return step_label_->setText(QString::fromStdString("cannot render: " + error));
+                     (*pending).*into = Sound{stimulus_ + "@" + set, samples};
+                     one_done();
+                   });
+    };
+    if (reference_level) step->left = 2;
+    render(level, &Pending::comparison, step);
+    if (reference_level) render(*reference_level, &Pending::reference, step);
     refresh();
   }
 
   // Before committing a step: stops the sequence and the sound; false while Next may not be pressed.
   bool end_step() {
     if (!gate().may_send) return false;
-    sequence_next_ = 0;
+    stop_sequence();
     controller_.stop();
     return true;
   }
@@ -75,14 +101,7 @@ class LevelSeriesView : public TrialView {
   QLabel* step_label_ = nullptr;
 
  private:
-  void play_sequence(int from) {
-    if (!comparison_ready_) return;
-    sequence_next_ = from + 1;
-    controller_.play(static_cast<std::size_t>(from));
-  }
-
   bool comparison_ready_ = false;
-  int sequence_next_ = 0;
 };
 
 }  // namespace ms::gui

@@ -15,15 +15,9 @@ class LimitsView : public LevelSeriesView {
   LimitsView(StudyController& c, QWidget* parent, const LimitsBlock& block)
       : LevelSeriesView(c, parent, block.stimulus, block.reference, block.parameter), start_(block.start) {
     setObjectName("limits-view");
-    add_prompt("Listen to the reference, then to the second sound. Do you hear a change?");
-    c.set_sounds({Sound{"reference", reference_}, Sound{"comparison", reference_}});
-    add_sequence_button(QString::fromUtf8("\u25B6 Play reference, then the second sound"), 2);
-    add_sound_buttons({"Reference", "Second sound"}, false);
-    choices_ = add_choices({"Same", "Different"}, {"same", "different"});
-    step_label_ = new QLabel(body());
-    step_label_->setObjectName("step");
-    layout_->addWidget(step_label_);
-    add_next_action([this] { answer_step(); }, "Next");
+    add_step_widgets("Listen to the reference, then to the second sound. Do you hear a change?",
+                     QString::fromUtf8("\u25B6 Play reference, then the second sound"), {"Reference", "Second sound"},
+                     {"Same", "Different"}, {"same", "different"}, [this] { answer_step(); });
     start_step();
   }
 

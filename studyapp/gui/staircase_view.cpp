@@ -16,15 +16,9 @@ class StaircaseView : public LevelSeriesView {
   StaircaseView(StudyController& c, QWidget* parent, const StaircaseBlock& block)
       : LevelSeriesView(c, parent, block.stimulus, block.reference, block.parameter), block_(block) {
     setObjectName("staircase-view");
-    add_prompt("Listen to the reference, then to A and B. Which of A and B is the same as the reference?");
-    c.set_sounds({Sound{"reference", reference_}, Sound{"A", reference_}, Sound{"B", reference_}});
-    add_sequence_button(QString::fromUtf8("\u25B6 Play reference, A, B"), 3);
-    add_sound_buttons({"Reference", "A", "B"}, false);
-    choices_ = add_choices({"A", "B"}, {"A", "B"});
-    step_label_ = new QLabel(body());
-    step_label_->setObjectName("step");
-    layout_->addWidget(step_label_);
-    add_next_action([this] { answer_step(); }, "Next");
+    add_step_widgets("Listen to the reference, then to A and B. Which of A and B is the same as the reference?",
+                     QString::fromUtf8("\u25B6 Play reference, A, B"), {"Reference", "A", "B"}, {"A", "B"}, {"A", "B"},
+                     [this] { answer_step(); });
     start_step();
   }
 

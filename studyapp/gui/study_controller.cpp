@@ -213,9 +213,19 @@ StaircaseReply StudyController::staircase_step(AbInterval chosen) {
 }
 
 bool StudyController::limits_step(bool different) {
+  return series_step([&] { session_->limits_step(different, elapsed_ms(), now_ms()); });
+}
+
+bool StudyController::tokens_step(bool different) {
+  return series_step([&] { session_->tokens_step(different, elapsed_ms(), now_ms()); });
+}
+
+// One step of a series run inside its trial: a new step starts unheard and untimed; the trial after
+// the series' last step shows (or the break).
+bool StudyController::series_step(const std::function<void()>& commit) {
   const std::size_t trial = session_->current_index();
   try {
-    session_->limits_step(different, elapsed_ms(), now_ms());
+    commit();
   } catch (const std::exception& e) {
     emit error(QString::fromStdString(e.what()));
     return true;

@@ -6,6 +6,7 @@
 #include <QObject>
 #include <QString>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <set>
@@ -97,6 +98,8 @@ class StudyController : public QObject {
   StaircaseReply staircase_step(AbInterval chosen);
   // Method of limits: commits one "same"/"different" of the series; true while the series goes on.
   bool limits_step(bool different);
+  // Token series: commits one "same"/"different" comparison; true while the series goes on.
+  bool tokens_step(bool different);
   void continue_after_break();        // from the break page
 
  signals:
@@ -111,6 +114,7 @@ class StudyController : public QObject {
 
  private:
   void show_current();
+  bool series_step(const std::function<void()>& commit);
   std::int64_t now_ms() const;
 
   std::string protocol_path_, protocol_text_, cache_dir_;

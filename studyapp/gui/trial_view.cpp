@@ -3,6 +3,7 @@
 
 #include <QCheckBox>
 #include <QShortcut>
+#include <QTimer>
 
 #include "studyapp/core/training_feedback.hpp"
 
@@ -82,23 +83,8 @@ QWidget* TrialView::add_sound_buttons(const QStringList& labels, bool seamless, 
   auto* box = new QWidget(body_);
   QBoxLayout* row = vertical ? static_cast<QBoxLayout*>(new QVBoxLayout(box)) : new QHBoxLayout(box);
   row->setContentsMargins(0, 0, 0, 0);
-  for (int i = 0; i < labels.size(); ++i) {
-    auto* b = new QPushButton(box);
-    b->setObjectName(QString("play-%1").arg(i));
-    b->setCheckable(true);
-    b->setFocusPolicy(Qt::NoFocus);
-    b->setMinimumWidth(b->fontMetrics().horizontalAdvance(QString::fromUtf8("\u25B6 ") + labels[i] + " \u2713") + 16);
-    const auto index = static_cast<std::size_t>(i);
-    connect(b, &QPushButton::clicked, this, [this, index, seamless] { press_play(index, seamless); });
-    row->addWidget(b);
-    play_buttons_.push_back(b);
-  }
-  sound_labels_ = labels;
-  auto* stop = new QPushButton(QString::fromUtf8("\u25A0 Stop"), box);
-  stop->setObjectName("stop");
-  stop->setFocusPolicy(Qt::NoFocus);
-  connect(stop, &QPushButton::clicked, this, [this] { controller_.stop(); });
-  row->addWidget(stop);
+  for (int i = 0; i < labels.size(); ++i) row->addWidget(make_play_button(labels[i], seamless, box));
+  row->addWidget(make_stop_button(box));
   if (with_loop) {
     auto* loop = new QCheckBox("Loop", box);
     loop->setObjectName("loop");
@@ -108,11 +94,31 @@ QWidget* TrialView::add_sound_buttons(const QStringList& labels, bool seamless, 
   }
   if (!vertical) row->addStretch();
   (into ? into : layout_)->addWidget(box);
-  if (digits_play_sounds_)
-    for (int i = 0; i < labels.size() && i < 9; ++i)
-      add_key(QKeySequence(Qt::Key_1 + i), [this, i, seamless] { press_play(static_cast<std::size_t>(i), seamless); });
   refresh();
   return box;
+}
+
+QPushButton* TrialView::make_play_button(const QString& label, bool seamless, QWidget* parent) {
+  const std::size_t index = play_buttons_.size();
+  auto* b = new QPushButton(parent);
+  b->setObjectName(QString("play-%1").arg(index));
+  b->setCheckable(true);
+  b->setFocusPolicy(Qt::NoFocus);
+  b->setMinimumWidth(b->fontMetrics().horizontalAdvance(QString::fromUtf8("\u25B6 ") + label + " \u2713") + 16);
+  connect(b, &QPushButton::clicked, this, [this, index, seamless] { press_play(index, seamless); });
+  play_buttons_.push_back(b);
+  sound_labels_ << label;
+  if (digits_play_sounds_ && index < 9)
+    add_key(QKeySequence(Qt::Key_1 + int(index)), [this, index, seamless] { press_play(index, seamless); });
+  return b;
+}
+
+QPushButton* TrialView::make_stop_button(QWidget* parent) {
+  auto* stop = new QPushButton(QString::fromUtf8("\u25A0 Stop"), parent);
+  stop->setObjectName("stop");
+  stop->setFocusPolicy(Qt::NoFocus);
+  connect(stop, &QPushButton::clicked, this, [this] { controller_.stop(); });
+  return stop;
 }
 
 void TrialView::press_play(std::size_t index, bool seamless) {
@@ -198,6 +204,23 @@ void TrialView::add_next_action(std::function<void()> on_next, const QString& te
   refresh();
 }
 
+void TrialView::add_sequence_button(const QString& text, int count) {
+  auto* sequence = new QPushButton(text, body_);
+  sequence->setObjectName("play-sequence");
+  connect(sequence, &QPushButton::clicked, this, [this] { play_sequence(0); });
+  layout_->addWidget(sequence);
+  connect(&controller_, &StudyController::playingChanged, this, [this, count](bool playing) {
+    if (!playing && sequence_next_ > 0 && sequence_next_ < count)
+      QTimer::singleShot(400, this, [this] { play_sequence(sequence_next_); });
+  });
+}
+
+void TrialView::play_sequence(int from) {
+  if (!sequence_playable()) return;
+  sequence_next_ = from + 1;
+  controller_.play(static_cast<std::size_t>(from));
+}
+
 void TrialView::show_feedback(const QString& text, bool correct) {
   feedback_->setText(text);
   feedback_->setStyleSheet(correct ? "color: #1b6e20; font-weight: bold; padding: 4px"
@@ -252,6 +275,8 @@ TrialView* make_trial_view(StudyController& c, QWidget* parent) {
     case BlockType::questionnaire: return make_questionnaire_view(c, parent);
     case BlockType::bs1116: return make_bs1116_view(c, parent);
     case BlockType::limits: return make_limits_view(c, parent);
+    case BlockType::tokens: return make_tokens_view(c, parent);
+    case BlockType::changepoint: return make_changepoint_view(c, parent);
     case BlockType::unknown: break;
   }
   return make_instructions_view(c, parent);  // a validated protocol has no unknown blocks
@@ -284,6 +309,8 @@ QString task_title(const Block& block) {
     case BlockType::questionnaire: return "A few questions";
     case BlockType::bs1116: return "Grade the difference";
     case BlockType::limits: return "Do you hear a change?";
+    case BlockType::tokens: return "Same or different?";
+    case BlockType::changepoint: return "Where does the material change?";
     case BlockType::unknown: break;
   }
   return "Listening test";

@@ -40,6 +40,10 @@ class TrialView : public QWidget {
   // button switches to it at the same position (MUSHRA). with_loop adds the loop check box.
   QWidget* add_sound_buttons(const QStringList& labels, bool seamless, bool with_loop = false,
                              QBoxLayout* into = nullptr, bool vertical = false);
+  // One play button for the next sound (objectName "play-<i>", i counting the buttons made so far) and a
+  // Stop button, for views that place them themselves.
+  QPushButton* make_play_button(const QString& label, bool seamless, QWidget* parent);
+  QPushButton* make_stop_button(QWidget* parent);
   QPushButton* play_button(std::size_t index) const { return play_buttons_.at(index); }
   void press_play(std::size_t index, bool seamless);
   // Exclusive checkable buttons (objectName "choice-<name>"), keys 1..n select.
@@ -47,6 +51,10 @@ class TrialView : public QWidget {
   // The Next button (objectName "next", Enter/Return) committing answer() (stored as its JSON).
   void add_next(std::function<Answer()> answer, const QString& text = "Next");
   void add_next_action(std::function<void()> on_next, const QString& text);  // the same button, own action
+  // The "play in order" button (objectName "play-sequence") over the first `count` sounds, 400 ms apart.
+  void add_sequence_button(const QString& text, int count);
+  void stop_sequence() { sequence_next_ = 0; }      // the running sequence plays no further sound
+  virtual bool sequence_playable() const { return true; }  // false while the sounds are not ready
   void refresh();                                   // re-derive Next, the hint and the play buttons
   // What the participant did, for answer_gate. By default: one heard flag per sound of the controller.
   virtual std::vector<bool> heard() const;
@@ -72,6 +80,8 @@ class TrialView : public QWidget {
   QLabel* feedback_;
   std::vector<QPushButton*> play_buttons_;
   QStringList sound_labels_;
+  void play_sequence(int from);
+  int sequence_next_ = 0;                           // the next sound of a running sequence (0: none runs)
   bool awaiting_continue_ = false;                  // feedback shown; the next press commits
   nlohmann::json pending_answer_;
 };
@@ -90,6 +100,8 @@ TrialView* make_rating_view(StudyController& c, QWidget* parent);
 TrialView* make_adjust_view(StudyController& c, QWidget* parent);
 TrialView* make_staircase_view(StudyController& c, QWidget* parent);
 TrialView* make_limits_view(StudyController& c, QWidget* parent);
+TrialView* make_tokens_view(StudyController& c, QWidget* parent);
+TrialView* make_changepoint_view(StudyController& c, QWidget* parent);
 TrialView* make_questionnaire_view(StudyController& c, QWidget* parent);
 
 // Names of a trial's stimuli as Sounds from the cache (already rendered by prepare(); empty buffers in

@@ -53,7 +53,7 @@ TrialInputs trial_inputs(const Block& block, const Trial& trial, const Presentat
     in.complete = stored == "A" || stored == "B";
     return in;
   }
-  if (block.type == BlockType::limits) {
+  if (block.type == BlockType::limits || block.type == BlockType::tokens) {
     in.complete = stored == "same" || stored == "different";
     return in;
   }

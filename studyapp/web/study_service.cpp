@@ -123,6 +123,8 @@ WebResponse StudyService::answer(const std::string& token, const std::string& te
         if (block.feedback) reply["feedback"] = {{"correct", correct}, {"message", correct ? "Right." : "Not quite."}};
       } else if (block.type == BlockType::limits) {
         session.limits_step(stored == "different", rt_ms, unix_now_ms());
+      } else if (block.type == BlockType::tokens) {
+        session.tokens_step(stored == "different", rt_ms, unix_now_ms());
       } else {
         const auto feedback = block.feedback ? training_feedback(*setup_.protocol, block, trial, stored) : std::nullopt;
         session.answer(stored, rt_ms, p.shown->plays, unix_now_ms());

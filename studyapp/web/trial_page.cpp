@@ -74,8 +74,9 @@ nlohmann::json page_json(Session& session, const Presentation& p, StimulusCache&
     page["reversals"] = session.staircase().reversals();
     page["max_reversals"] = b->reversals;
   }
-  if (std::holds_alternative<LimitsBlock>(block.body))
+  if (std::holds_alternative<LimitsBlock>(block.body) || std::holds_alternative<TokensBlock>(block.body))
     page["choices"] = choices({{"same", "Same"}, {"different", "Different"}});
+  if (const auto* b = std::get_if<TokensBlock>(&block.body)) page["comparisons"] = b->from - b->to;
   if (const auto* b = std::get_if<QuestionnaireBlock>(&block.body)) {
     nlohmann::json questions = nlohmann::json::array();
     for (std::size_t i = 0; i < b->questions.size(); ++i)

@@ -59,6 +59,18 @@ void present_limits(Presentation& p, Session& session, const LimitsBlock& block,
   p.sounds.back().name = block.stimulus.name + "@" + level;
 }
 
+// The reference token, then the compared one: the stimulus with its first K modes (K never sent).
+void present_tokens(Presentation& p, Session& session, const TokensBlock& block, StimulusCache& cache) {
+  const TokenSeries& series = session.tokens();
+  p.step = series.different().size();
+  const std::string reference = override_text(kTokenParameter, series.reference());
+  const std::string comparison = override_text(kTokenParameter, series.comparison());
+  p.sounds.push_back(sound_of(cache, block.stimulus.name, "Reference", {reference}));
+  p.sounds.back().name = block.stimulus.name + "@" + reference;
+  p.sounds.push_back(sound_of(cache, block.stimulus.name, "Next sound", {comparison}));
+  p.sounds.back().name = block.stimulus.name + "@" + comparison;
+}
+
 }  // namespace
 
 std::string override_text(const std::string& key, double value) { return key + "=" + csv::number(value); }
@@ -117,6 +129,7 @@ Presentation present(Session& session, StimulusCache& cache) {
     }
     case BlockType::identify:
     case BlockType::rating:
+    case BlockType::changepoint:
       for (std::size_t i = 0; i < names.size(); ++i)
         p.sounds.push_back(sound_of(cache, names[i], names.size() == 1 ? "Sound" : "Sound " + std::to_string(i + 1)));
       break;
@@ -132,6 +145,7 @@ Presentation present(Session& session, StimulusCache& cache) {
     }
     case BlockType::staircase: present_staircase(p, session, std::get<StaircaseBlock>(block.body), cache); break;
     case BlockType::limits: present_limits(p, session, std::get<LimitsBlock>(block.body), cache); break;
+    case BlockType::tokens: present_tokens(p, session, std::get<TokensBlock>(block.body), cache); break;
     default: break;  // instructions, questionnaire: nothing to hear
   }
   p.page = page_json(session, p, cache);

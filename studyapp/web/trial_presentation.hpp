@@ -38,7 +38,7 @@ struct PresentedSound {
 
 struct Presentation {
   std::size_t trial = 0;    // Session::current_index()
-  std::size_t step = 0;     // staircase, limits: steps taken in the track or series; 0 otherwise
+  std::size_t step = 0;     // staircase, limits, tokens: steps taken in the track or series; 0 otherwise
   std::vector<PresentedSound> sounds;
   int plays = 0;            // play and switch events logged
   bool comparison_in_b = false;                // staircase: which interval holds the comparison

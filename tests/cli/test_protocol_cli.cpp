@@ -23,7 +23,7 @@ TEST(ProtocolCli, DemoChecksClean) {
   EXPECT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_TRUE(j["problems"].empty());
-  EXPECT_EQ(j["blocks"], 12);
+  EXPECT_EQ(j["blocks"], 14);
 }
 
 // A limits block that ascends is refused in one located line, exit 2; a good one schedules one trial

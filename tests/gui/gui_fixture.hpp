@@ -106,7 +106,8 @@ struct DriveLog {
   std::vector<double> resynth_ms;            // adjust: slider move -> new sound ready
   std::vector<std::string> listen_rule;      // trials whose Next was disabled until every sound was heard
   std::set<ms::BlockType> seen;
-  int trials = 0, breaks = 0, staircase_steps = 0, limits_steps = 0;
+  int trials = 0, breaks = 0, staircase_steps = 0, limits_steps = 0, tokens_steps = 0;
+  int marks_before_hearing = 0;              // changepoint: marks that worked before their sound was heard
   bool used_keys = false;                    // shortcuts (Enter, 1..n) took effect
 };
 
@@ -231,6 +232,28 @@ inline void answer_trial(ms::gui::MainWindow& w, DriveLog& log) {
         ++log.limits_steps;
       }
       return;
+    case ms::BlockType::tokens:
+      for (int step = 0; step < 1000 && !moved_on(); ++step) {
+        auto* play0 = child<QPushButton>(view, "play-0");
+        wait_until([&] { return play0->isEnabled() && child<QPushButton>(view, "play-1")->isEnabled(); });
+        // "different" first (the compared token becomes the reference), then "same"
+        const char* answer = step == 0 ? "choice-different" : "choice-same";
+        QTest::mouseClick(children_with_prefix<QAbstractButton>(view, answer)[0], Qt::LeftButton);
+        if (step == 0 && !next->isEnabled()) log.listen_rule.push_back("tokens");
+        play_all();
+        QTest::mouseClick(next, Qt::LeftButton);
+        ++log.tokens_steps;
+      }
+      return;
+    case ms::BlockType::changepoint: {
+      const auto marks = children_with_prefix<QPushButton>(view, "mark-");
+      for (auto* m : marks) log.marks_before_hearing += m->isEnabled();
+      if (!next->isEnabled()) log.listen_rule.push_back("changepoint");
+      play_all();
+      if (marks.size() > 2) QTest::mouseClick(child<QPushButton>(view, "mark-2"), Qt::LeftButton);
+      QTest::mouseClick(next, Qt::LeftButton);
+      return;
+    }
     case ms::BlockType::questionnaire:
       for (auto* e : children_with_prefix<QLineEdit>(view, "question-")) QTest::keyClicks(e, "fine, thanks");
       if (auto options = children_with_prefix<QAbstractButton>(view, "option-"); !options.empty())

@@ -54,11 +54,14 @@ TEST(ReadmePictures, EveryViewOnTheGivenScreen) {
     shot[type] = true;
     QWidget* v = win.trial_view();
     // A participant mid-trial: the first sounds heard, so the marks and hints show.
-    if (auto* p = v->findChild<QPushButton*>("play-0"); p && type != ms::BlockType::staircase && type != ms::BlockType::limits &&
-        type != ms::BlockType::adjust)
-      QTest::mouseClick(p, Qt::LeftButton);
-    if (type == ms::BlockType::adjust || type == ms::BlockType::staircase || type == ms::BlockType::limits)
-      wait_until([&] { auto* p = v->findChild<QPushButton*>("play-0"); return p && p->isEnabled(); });
+    const bool rendered_live = type == ms::BlockType::adjust || type == ms::BlockType::staircase ||
+                               type == ms::BlockType::limits || type == ms::BlockType::tokens;
+    if (auto* p = v->findChild<QPushButton*>("play-0"); p && !rendered_live) QTest::mouseClick(p, Qt::LeftButton);
+    if (type == ms::BlockType::changepoint) {  // three sounds heard, a change marked at the third
+      for (const char* name : {"play-1", "play-2"}) QTest::mouseClick(child<QPushButton>(v, name), Qt::LeftButton);
+      QTest::mouseClick(child<QPushButton>(v, "mark-2"), Qt::LeftButton);
+    }
+    if (rendered_live) wait_until([&] { auto* p = v->findChild<QPushButton*>("play-0"); return p && p->isEnabled(); });
     shoot(win, dir, ms::to_string(type));
   }));
   EXPECT_EQ(shot.size(), ms::block_type_names().size());

@@ -87,6 +87,15 @@ void check_widgets(ms::BlockType type, ms::gui::MainWindow& w) {
       EXPECT_EQ(count_prefix(v, "choice-"), 2u);  // same, different
       EXPECT_EQ(count_prefix(v, "play-"), 3u);    // the sequence, the reference, the second sound
       break;
+    case ms::BlockType::tokens:
+      EXPECT_NE(v->findChild<QPushButton*>("play-sequence"), nullptr);
+      EXPECT_EQ(count_prefix(v, "choice-"), 2u);  // same, different
+      EXPECT_EQ(count_prefix(v, "play-"), 3u);    // the sequence, the reference token, the next token
+      break;
+    case ms::BlockType::changepoint:
+      EXPECT_EQ(count_prefix(v, "play-"), t.stimuli.size() + 1);  // one per sound of the sweep + the sequence
+      EXPECT_EQ(count_prefix(v, "mark-"), t.stimuli.size());      // the first is a placeholder, never enabled
+      break;
     case ms::BlockType::questionnaire:
       EXPECT_EQ(count_prefix(v, "question-"), 1u);
       EXPECT_EQ(count_prefix(v, "option-headphones-"), 3u);
@@ -119,7 +128,8 @@ TEST(Screenshots, EveryViewRendersWithItsWidgets) {
     }
     if (shot[type]) return;
     shot[type] = true;
-    if (type == ms::BlockType::adjust || type == ms::BlockType::staircase || type == ms::BlockType::limits)  // the first render
+    if (type == ms::BlockType::adjust || type == ms::BlockType::staircase || type == ms::BlockType::limits ||
+        type == ms::BlockType::tokens)  // the first render
       wait_until([&] {
         auto* p = win.trial_view()->findChild<QPushButton*>("play-0");
         return type == ms::BlockType::adjust ? win.trial_view()->property("renders").toInt() >= 1 : p && p->isEnabled();

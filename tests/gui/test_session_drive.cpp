@@ -34,6 +34,8 @@ TEST(SessionDrive, WholeDemoSessionThroughTheViews) {
   EXPECT_GE(log.breaks, 1);
   EXPECT_GT(log.staircase_steps, 2);
   EXPECT_EQ(log.limits_steps, 3);  // "same", "same", "different": the series ends at the first change
+  EXPECT_EQ(log.tokens_steps, 5);  // from 6 to 1 modes: every token below the first compared once
+  EXPECT_EQ(log.marks_before_hearing, 0);  // a change can be marked only at a sound heard
   EXPECT_TRUE(log.used_keys) << "Enter did not act as Next";
   std::size_t gated = 0;  // every trial with sounds waits until every sound was heard (listen_all default)
   for (const ms::Trial& t : w.controller()->session().schedule().trials)
@@ -130,7 +132,8 @@ TEST(SessionDrive, ClosingMidSessionResumesAtTheFirstUnansweredTrial) {
 }
 
 // The shipped replications with few trials, whole sessions through the same views: the A/B comparison
-// with a reference per pair (bipolar -3..+3) and the five-material identification.
+// with a reference per pair (bipolar -3..+3), the five-material identification and the Q sweeps of
+// change points (10 trials of 19 sounds).
 class ShippedProtocol : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(ShippedProtocol, WholeSessionThroughTheViews) {
@@ -147,4 +150,5 @@ TEST_P(ShippedProtocol, WholeSessionThroughTheViews) {
   EXPECT_EQ(store.count("responses"), static_cast<std::int64_t>(total));
 }
 
-INSTANTIATE_TEST_SUITE_P(Replications, ShippedProtocol, ::testing::Values("ab_synthesis_methods", "ren2013_materials"));
+INSTANTIATE_TEST_SUITE_P(Replications, ShippedProtocol,
+                         ::testing::Values("ab_synthesis_methods", "ren2013_materials", "skandalou2017_changepoint"));

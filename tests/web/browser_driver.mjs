@@ -121,6 +121,15 @@ export class Participant {
         await this.hearAll();
         await page.locator('#view button.choice').last().click();
         break;
+      case 'tokens':  // "same": the reference stays; the series still ends after the last token
+        await this.hearAll();
+        await page.locator('#view button.choice').first().click();
+        break;
+      case 'changepoint':  // a change marked at the third sound, which works only once it was heard
+        if (!await page.locator('#mark-2').isDisabled()) fail('a change could be marked before its sound was heard');
+        await this.hearAll();
+        await page.locator('#mark-2').click();
+        break;
       case 'mushra': {
         await this.hearAll();
         const sliders = page.locator('#view input[type=range]');

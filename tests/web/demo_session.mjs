@@ -81,7 +81,7 @@ try {
       await p.answer(s);
     }
     await p.next();
-    if (s.type === 'staircase') ++staircaseSteps; else ++answered;
+    if (s.type === 'staircase' || s.type === 'tokens') ++staircaseSteps; else ++answered;
   }
   if (p.errors.length) fail(`errors in the page: ${p.errors.join('; ')}`);
 } catch (e) {
@@ -110,7 +110,8 @@ await browser.close();
 await serve.stop();
 
 if (!reloaded) fail('the session never reached the reload point');
-for (const t of ['instructions', 'ab', 'mushra', 'bs1116', 'magnitude', 'identify', 'rating', 'adjust', 'staircase', 'limits', 'questionnaire'])
+for (const t of ['instructions', 'ab', 'mushra', 'bs1116', 'magnitude', 'identify', 'rating', 'adjust', 'staircase', 'limits',
+                 'tokens', 'changepoint', 'questionnaire'])
   if (!sawTypes.has(t)) fail(`no ${t} page was shown`);
 const exported = exportStore(serve.db, join(work, 'export'));
 if (exported.lines.length !== total) fail(`the store holds ${exported.lines.length} responses, the session had ${total} trials`);
@@ -135,7 +136,7 @@ console.log(`adjust in the browser: slider release to AudioBufferSourceNode star
             `max ${sorted.at(-1).toFixed(1)} ms (n=${sorted.length}, budget ${kAdjustBudgetMs} ms)`);
 console.log(`server: answer committed + next trial p50 ${median(answers)} ms (max ${answers.at(-1)} ms, n=${answers.length}); ` +
             `adjust render p50 ${median(renders)} ms (n=${renders.length}); ${switches.length} MUSHRA switches at positions > 0`);
-console.log(`browser session: ${total} trials answered (${staircaseSteps} staircase steps), reload resumed, ` +
+console.log(`browser session: ${total} trials answered (${staircaseSteps} staircase and token-series steps), reload resumed, ` +
             `${exported.lines.length} responses exported from one session; experimenter page: finished ${row.answered}/${row.scheduled}, ` +
             'responses.csv download identical to the export');
 rmSync(work, { recursive: true, force: true });

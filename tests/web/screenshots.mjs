@@ -23,11 +23,12 @@ for (const [scale, dir] of [[1, out], [1.5, join(source, 'build', 'web-shots-150
     if (s.kind === 'finished') break;
     if (s.kind === 'error') fail(`the page shows an error: ${s.text}`);
     if (s.kind === 'message') { await p.next(); continue; }
-    if (!shot.has(s.type) && ['mushra', 'bs1116', 'ab', 'adjust', 'limits', 'staircase'].includes(s.type)) {
-      shot.add(s.type);
-      await page.screenshot({ path: join(dir, `web-${s.type}.png`) });
-    }
+    const wanted = !shot.has(s.type) && ['mushra', 'bs1116', 'ab', 'adjust', 'limits', 'staircase', 'tokens', 'changepoint'].includes(s.type);
+    const answeredFirst = s.type === 'changepoint';  // its picture shows the sounds heard and a change marked
+    if (wanted && !answeredFirst) await page.screenshot({ path: join(dir, `web-${s.type}.png`) });
     await p.answer(s);
+    if (wanted && answeredFirst) await page.screenshot({ path: join(dir, `web-${s.type}.png`) });
+    if (wanted) shot.add(s.type);
     await p.next();
   }
   const x = await context.newPage();

@@ -32,6 +32,31 @@ export function soundButtons(trial, indices, { switching = false, parent = null 
   return row;
 }
 
+// A button playing the sounds `indices` in order, 400 ms apart; it stops when the trial closes.
+export function sequenceButton(trial, indices, text) {
+  const b = el('button', { type: 'button', id: 'play-sequence', text });
+  b.addEventListener('click', async () => {
+    for (const i of indices) {
+      await trial.player.play(i);
+      await new Promise((done) => setTimeout(done, trial.player.buffers[i].duration * 1000 + 400));
+      if (trial.closed) return;
+    }
+  });
+  trial.root.append(b);
+  return b;
+}
+
+// One step of a series run inside its trial (limits, tokens): the reference and the second sound, a
+// button playing them in order, Same / Different (the page's choices) and where the series is.
+export function sameOrDifferentStep(trial, { task, sequence, step }) {
+  prompt(trial, task);
+  sequenceButton(trial, [0, 1], sequence);
+  soundButtons(trial, [0, 1]);
+  const pick = choices(trial, trial.page.choices);
+  trial.root.append(el('p', { class: 'note', id: 'step', text: step }));
+  return { answer: () => pick.value(), complete: () => pick.value() !== null };
+}
+
 // Exclusive choices [{value, label}]; returns () => the chosen value or null.
 export function choices(trial, list, parent = null) {
   let chosen = null;

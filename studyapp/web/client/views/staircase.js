@@ -1,19 +1,11 @@
 // Adaptive staircase, one step per page: the reference, then A and B (one of them the reference again,
 // the other the stimulus at the track's level); which of A and B is the same as the reference?
-import { choices, el, prompt, soundButtons } from './common.js';
+import { choices, el, prompt, sequenceButton, soundButtons } from './common.js';
 
 export default function staircase(trial) {
   const page = trial.page;
   prompt(trial, 'Listen to the reference, then to A and B. Which of A and B is the same as the reference?');
-  const sequence = el('button', { type: 'button', id: 'play-sequence', text: '▶ Play reference, A, B' });
-  sequence.addEventListener('click', async () => {
-    for (let i = 0; i < 3; ++i) {
-      await trial.player.play(i);
-      await new Promise((done) => setTimeout(done, trial.player.buffers[i].duration * 1000 + 400));
-      if (trial.closed) return;
-    }
-  });
-  trial.root.append(sequence);
+  sequenceButton(trial, [0, 1, 2], '▶ Play reference, A, B');
   soundButtons(trial, [0, 1, 2]);
   const pick = choices(trial, page.choices);
   trial.root.append(el('p', { class: 'note', id: 'step',
