@@ -13,6 +13,10 @@ double DampingLaw::decay_per_s(double lambda) const {
     case DampingKind::powerlaw: return 0.5 * alpha2 * std::pow(omega, 2.0 * alpha3);
     case DampingKind::hybrid: return 0.5 * (alpha1 + alpha2 * std::pow(omega, 2.0 * alpha3));
     case DampingKind::constant_q: return loss_factor * omega;
+    case DampingKind::relaxation: {
+      const double x = relaxation_hz > 0.0 ? omega / (2.0 * std::numbers::pi * relaxation_hz) : 0.0;
+      return 0.5 * alpha1 + omega * (loss_factor + relaxation_strength * x / (1.0 + x * x));
+    }
   }
   return 0.0;
 }

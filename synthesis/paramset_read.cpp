@@ -117,9 +117,9 @@ void RecipeReader::modes_model(const YAML::Node& root) const {
 }
 
 DampingLaw RecipeReader::damping(const YAML::Node& node, const std::string& path) const {
-  r.check_keys(node, path, {"law", "alpha1", "alpha2", "alpha3", "loss_factor"});
+  r.check_keys(node, path, {"law", "alpha1", "alpha2", "alpha3", "loss_factor", "relaxation_strength", "relaxation_hz"});
   DampingLaw law;
-  if (!node["law"]) r.fail(node, path, "missing 'law' (rayleigh, powerlaw, hybrid or constant_q)");
+  if (!node["law"]) r.fail(node, path, "missing 'law' (rayleigh, powerlaw, hybrid, constant_q or relaxation)");
   law.kind = choice(node["law"], join(path, "law"), kDampingKindNames, "damping law");
   auto get = [&](const char* key, double fallback) {
     return node[key] ? r.non_negative(node[key], join(path, key)) : fallback;
@@ -128,6 +128,11 @@ DampingLaw RecipeReader::damping(const YAML::Node& node, const std::string& path
   law.alpha2 = get("alpha2", 0.0);
   law.alpha3 = get("alpha3", 1.0);
   law.loss_factor = get("loss_factor", 0.0);
+  law.relaxation_strength = get("relaxation_strength", 0.0);
+  law.relaxation_hz = get("relaxation_hz", 0.0);
+  for (const char* key : {"relaxation_strength", "relaxation_hz"})
+    if (node[key] && law.kind != DampingKind::relaxation)
+      r.fail(node[key], join(path, key), "applies to the relaxation law only");
   if (law.kind == DampingKind::constant_q && !node["loss_factor"])
     r.fail(node, path, "constant_q needs 'loss_factor' (D in d = 2 pi f D)");
   return law;

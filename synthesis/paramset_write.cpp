@@ -128,6 +128,8 @@ void RecipeWriter::material(const ParamSetRecipe& r) {
     if (d.alpha2 != 0.0) number("alpha2", d.alpha2);
     if (d.alpha3 != 1.0) number("alpha3", d.alpha3);
     if (d.loss_factor != 0.0 || d.kind == DampingKind::constant_q) number("loss_factor", d.loss_factor);
+    if (d.relaxation_strength != 0.0) number("relaxation_strength", d.relaxation_strength);
+    if (d.relaxation_hz != 0.0) number("relaxation_hz", d.relaxation_hz);
     end();
   }
   if (r.specific_modulus_m2_s2) number("specific_modulus_m2_s2", *r.specific_modulus_m2_s2);

@@ -231,7 +231,8 @@ EmgVector fit_law_scaled(const EmgProblem& pr, DampingEstimator estimator, int* 
       if (!lb) polish_least_squares(pr, theta, evaluations);
       break;
     }
-    case DampingKind::constant_q: throw std::invalid_argument("constant_q is not fitted");
+    case DampingKind::constant_q:
+    case DampingKind::relaxation: throw std::invalid_argument(to_string(pr.law) + " is not fitted");
   }
   return theta;
 }

@@ -39,7 +39,8 @@ int law_param_count(DampingKind law) {
     case DampingKind::rayleigh: return 2;
     case DampingKind::powerlaw: return 2;
     case DampingKind::hybrid: return 3;
-    case DampingKind::constant_q: break;
+    case DampingKind::constant_q:
+    case DampingKind::relaxation: break;
   }
   throw std::invalid_argument("damping fit supports the rayleigh, powerlaw and hybrid laws");
 }
@@ -191,7 +192,8 @@ DampingLaw law_from_scaled(const EmgProblem& pr, const EmgVector& theta) {
       law.alpha3 = theta[2];
       law.alpha2 = pr.c_scale * theta[1] / std::pow(pr.lambda_scale, law.alpha3);
       break;
-    case DampingKind::constant_q: throw std::invalid_argument("constant_q is not fitted");
+    case DampingKind::constant_q:
+    case DampingKind::relaxation: throw std::invalid_argument(to_string(pr.law) + " is not fitted");
   }
   return law;
 }
@@ -209,7 +211,8 @@ EmgVector scaled_from_law(const EmgProblem& pr, const DampingLaw& law) {
       v << law.alpha1 / pr.c_scale, law.alpha2 * std::pow(pr.lambda_scale, law.alpha3) / pr.c_scale,
           law.alpha3;
       break;
-    case DampingKind::constant_q: throw std::invalid_argument("constant_q is not fitted");
+    case DampingKind::constant_q:
+    case DampingKind::relaxation: throw std::invalid_argument(to_string(pr.law) + " is not fitted");
   }
   return v;
 }
