@@ -7,49 +7,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "analysis/stats/box_summary.hpp"
 #include "studyapp/plots/canvas.hpp"
 
 namespace ms::plots {
 
 using namespace detail;
-
-namespace {
-
-// Quantile by linear interpolation between order statistics (R's type 7, the default of quantile()).
-double quantile_sorted(const std::vector<double>& v, double q) {
-  const double h = (double(v.size()) - 1) * q;
-  const auto lo = std::size_t(std::floor(h));
-  const std::size_t hi = std::min(lo + 1, v.size() - 1);
-  return v[lo] + (h - double(lo)) * (v[hi] - v[lo]);
-}
-
-struct BoxStats {
-  double whisker_lo, q1, median, q3, whisker_hi;
-  std::vector<double> outliers;
-};
-
-// Tukey's box: whiskers reach the furthest ratings within 1.5 IQR of the box; the rest are outliers.
-BoxStats box_stats(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  BoxStats b{};
-  b.q1 = quantile_sorted(v, 0.25);
-  b.median = quantile_sorted(v, 0.5);
-  b.q3 = quantile_sorted(v, 0.75);
-  const double iqr = b.q3 - b.q1, lo_fence = b.q1 - 1.5 * iqr, hi_fence = b.q3 + 1.5 * iqr;
-  b.whisker_lo = b.q1;
-  b.whisker_hi = b.q3;
-  for (double x : v) {
-    if (x < lo_fence || x > hi_fence) {
-      b.outliers.push_back(x);
-      continue;
-    }
-    b.whisker_lo = std::min(b.whisker_lo, x);
-    b.whisker_hi = std::max(b.whisker_hi, x);
-  }
-  return b;
-}
-
-}  // namespace
 
 void mushra_boxplot(const std::string& path, const std::vector<std::string>& conditions,
                     const std::vector<std::vector<double>>& ratings, const std::vector<double>& means,
@@ -70,7 +33,7 @@ void mushra_boxplot(const std::string& path, const std::vector<std::string>& con
   boxes->setBoxWidth(0.42);
   boxes->setBrush(QColor(198, 219, 239));
   boxes->setPen(QPen(QColor(40, 70, 110), 1.4));
-  std::vector<BoxStats> stats(n);
+  std::vector<BoxSummary> stats(n);
   bool any_box = false;  // without ratings (e.g. proportions with intervals) the marks sit centred
   QStringList categories;
   for (std::size_t i = 0; i < n; ++i) {
@@ -84,10 +47,10 @@ void mushra_boxplot(const std::string& path, const std::vector<std::string>& con
       boxes->append(new QBoxSet(-1000, -1000, -1000, -1000, -1000, qs(conditions[i])));
       continue;
     }
-    stats[i] = box_stats(finite);
+    stats[i] = box_summary(finite);  // Tukey's box on type-7 quartiles
     any_box = true;
-    const BoxStats& b = stats[i];
-    boxes->append(new QBoxSet(b.whisker_lo, b.q1, b.median, b.q3, b.whisker_hi, qs(conditions[i])));
+    const BoxSummary& b = stats[i];
+    boxes->append(new QBoxSet(b.lower_whisker, b.q1, b.median, b.q3, b.upper_whisker, qs(conditions[i])));
   }
   chart.addSeries(boxes);
   chart.legend()->setVisible(false);  // the caption below explains the symbols instead
