@@ -38,7 +38,7 @@ void print_difference_curve(const std::vector<DifferencePoint>& curve, const std
     std::cout << nlohmann::json{{"reference", reference}, {"offset", offset}, {"points", points}}.dump() << "\n";
     return;
   }
-  std::printf("difference to '%s' (each listener's mean rating of the pair %+g, then the mean over listeners)\n",
+  std::printf("difference to '%s' (each listener's mean rating of the pair, offset %+g, then the mean over listeners)\n",
               reference.c_str(), offset);
   std::printf("%-10s %-20s %9s %10s %8s\n", x.empty() ? "x" : x.c_str(), "token", "listeners", "difference", "sd");
   for (const auto& p : curve)

@@ -65,8 +65,9 @@ TEST(ReplicationProtocols, EachValidatesWithNoProblem) {
 }
 
 // van den Doel et al. 2002: a descending a_v series (method of limits) from 20 dB in -1 dB steps against
-// the unpruned model, one per object and listener;
-// same/different token ladders; magnitude estimation of every pair of 11 tokens + the reference.
+// the unpruned model, one per object and listener; the adaptive token procedure over every token of
+// each sequence (one series per object x order); magnitude estimation of every pair of 11 tokens + the
+// reference.
 TEST(ReplicationProtocols, VanDenDoel2002KeepsThePapersDesign) {
   const ms::Protocol p = load("vandendoel2002");
   for (const std::string object : {"vase", "bowl"}) {
@@ -100,10 +101,21 @@ TEST(ReplicationProtocols, VanDenDoel2002KeepsThePapersDesign) {
       EXPECT_EQ(distinct.size(), 78u);
       EXPECT_EQ(identical, 12u);
 
-      const auto& ab = std::get<ms::AbBlock>(block(p, "tokens-" + object + "-" + method).body);
-      EXPECT_EQ(ab.mode, ms::AbMode::same_different);
-      EXPECT_EQ(ab.pairs.size(), 13u);  // 11 neighbouring pairs + 2 identical catch pairs
+      // Exp. 2: every token of the sequence, from the one with the most modes down to one mode.
+      const ms::Block& tb = block(p, "tokens-" + object + "-" + method);
+      const auto& tokens = std::get<ms::TokensBlock>(tb.body);
+      EXPECT_EQ(tokens.stimulus.name, object + "-" + method);
+      EXPECT_EQ(tokens.to, 1);
+      EXPECT_EQ(tb.repeats, 1);  // Table 2: one count per listener and sequence
+      EXPECT_EQ(trials_of(schedule, tb.id).size(), 1u);
     }
+  // The ceilings: every mode in the naive order (the paper's 179 and 128), the audible ones at a_v = 16
+  // dB in the energy order (the paper's 100 and 41; 132 and 103 on the stand-ins).
+  const std::map<std::string, int> from{{"tokens-vase-naive", 179}, {"tokens-vase-energy", 132},
+                                        {"tokens-bowl-naive", 128}, {"tokens-bowl-energy", 103}};
+  for (const auto& [id, n] : from) EXPECT_EQ(std::get<ms::TokensBlock>(block(p, id).body).from, n) << id;
+  // The validator refuses a ceiling above what the pruning keeps, so these are the sequences' full lengths.
+  EXPECT_TRUE(ms::check_protocol_file(protocol_path("vandendoel2002")).problems.empty());
 }
 
 // Sterling et al. 2019: 4 datasets x 2 shapes x 5 materials; shape and material identification;

@@ -2,7 +2,9 @@
 # et al. (2002) summarised by R. Table 1: medians of a_v per object and pooled (the paper used
 # 16 dB). Table 2: column medians; naive vs energy per object by the paired Wilcoxon signed-rank
 # test (exact = NULL as R's default: ties/zeros force the normal approximation with continuity
-# correction, so exact = FALSE too, and the uncorrected variant) and the sign test (binom.test).
+# correction, so exact = FALSE too, and the uncorrected variant) and the sign test (binom.test) - a
+# check of our signed-rank test on numbers with ties and zeros, not an analysis of the paper: the
+# columns' ceilings differ (179 vs 100, 128 vs 41 tokens), so a paired test of the counts is confounded.
 # Run from this folder: Rscript make_golden.R
 g17 <- function(x) sprintf("%.17g", x)
 t1 <- read.csv("table1_av.csv", comment.char = "#")
