@@ -63,12 +63,12 @@ ModalModel strike_model(const AuditModel& model, std::size_t s) {
   for (std::size_t n = 0; n < model.modes.size(); ++n) {
     const AuditMode& m = model.modes[n];
     const double d = strike_decay(model, s, n);
-    double amp = m.amp * model.gain[s], phase = 0.0;
+    double amp = m.amp * model.gain[s], phase = m.phase_rad;
     if (model.hit.active()) amp *= std::exp(model.hit.log_factor(s, n));
     if (tau > 0.0) {
       const std::complex<double> g = contact_factor(e, d, m.freq_hz);
       amp *= std::abs(g);
-      phase = std::arg(g);
+      phase += std::arg(g);
     }
     if (m.doublet.split_hz > 0.0) {
       // Keep the pair's energy equal to the merged mode's (tracks merge members by energy).

@@ -22,6 +22,8 @@ struct AuditMode {
   double decay_per_s = 0.0;
   double amp = 0.0;         // shape amplitude A_n (strike gain 1, ideal impulse)
   int track = -1;           // measured track it stands for (-1: none)
+  double phase_rad = 0.0;   // at the onset, before the contact: a mode struck beyond a nodal line of
+                            // its shape (or heard beyond one) starts inverted (pi)
   Doublets doublet;         // mode_doublet: f -+ split_hz/2 when split_hz > 0, `balance` of the amplitude
                             // in the upper mode (the pair keeps the mode's energy)
 };

@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <numbers>
 #include <sstream>
+
+#include "synthesis/excitation.hpp"
 
 namespace ms::audit {
 
@@ -123,6 +126,29 @@ void fit_amplitudes(AuditModel& model, const AuditData& data, const std::vector<
   }
 }
 
+void fit_phases(AuditModel& model, const AuditData& data, const std::vector<std::size_t>& strikes) {
+  Excitation contact;
+  contact.shape = PulseShape::raised_cosine;
+  for (std::size_t n = 0; n < model.modes.size(); ++n) {
+    AuditMode& m = model.modes[n];
+    if (m.track < 0) continue;
+    std::complex<double> sum = 0.0;
+    for (std::size_t s : strikes) {
+      const TrackObservation& o = data.tracks[std::size_t(m.track)].strikes[s];
+      if (!o.present || o.members.empty()) continue;
+      const Mode& main = *std::max_element(o.members.begin(), o.members.end(),
+                                           [](const Mode& a, const Mode& b) { return a.amp < b.amp; });
+      double phase = main.phase_rad;
+      if (!model.contact_s.empty() && model.contact_s[s] > 0.0) {
+        contact.contact_s = model.contact_s[s];
+        phase -= std::arg(contact_factor(contact, strike_decay(model, s, n), m.freq_hz));
+      }
+      sum += main.amp * std::polar(1.0, phase);
+    }
+    if (std::abs(sum) > 0.0) m.phase_rad = std::arg(sum);
+  }
+}
+
 AuditModel fit_baseline(const AuditData& data, const std::vector<std::size_t>& strikes_in) {
   const std::vector<std::size_t> strikes = strikes_in.empty() ? all_strikes(data) : strikes_in;
   AuditModel model;
@@ -136,6 +162,7 @@ AuditModel fit_baseline(const AuditData& data, const std::vector<std::size_t>& s
   model.law = fit_law_relative(track_median_points(data, strikes), DampingKind::rayleigh);  // medians: robust to one odd strike
   apply_law(model);
   fit_amplitudes(model, data, strikes);
+  fit_phases(model, data, strikes);
   return model;
 }
 
@@ -177,6 +204,7 @@ AuditModel baseline_from_model(const ModalModel& given, const AuditData& data,
     m.freq_hz = g.freq_hz;
     m.decay_per_s = g.decay_per_s;
     m.amp = g.amp;
+    m.phase_rad = g.phase_rad;
     m.track = track;
     if (track >= 0) mode_of_track[std::size_t(track)] = int(model.modes.size());
     if (audit_mode_of_given) audit_mode_of_given->push_back(model.modes.size());

@@ -31,6 +31,10 @@ std::vector<DampingPoint> track_median_points(const AuditData& data, const std::
 // least squares on log amplitudes, three rounds.
 void fit_amplitudes(AuditModel& model, const AuditData& data, const std::vector<std::size_t>& strikes);
 
+// Each tracked mode's phase at the onset: the amplitude-weighted circular mean over the strikes of its
+// strongest member's measured phase, less the strike's contact phase (when the model has contacts).
+void fit_phases(AuditModel& model, const AuditData& data, const std::vector<std::size_t>& strikes);
+
 // Decays of the modes with a track from the model's law.
 void apply_law(AuditModel& model);
 

@@ -20,8 +20,11 @@ ModalModel given_model(const ParamSet& set, const std::string& set_path, double 
                      " Hz differs from the recordings' " + std::to_string(std::lround(recordings_rate_hz)) + " Hz");
   std::vector<std::string> warnings;
   ModalModel model = audible_model(set, warnings);
-  for (Mode& m : model.modes)
-    m.amp *= set.excitation.gain * std::abs(contact_factor(set.excitation, m.decay_per_s, m.freq_hz));
+  for (Mode& m : model.modes) {
+    const std::complex<double> c = contact_factor(set.excitation, m.decay_per_s, m.freq_hz);
+    m.amp *= set.excitation.gain * std::abs(c);
+    m.phase_rad += std::arg(c);
+  }
   return model;
 }
 

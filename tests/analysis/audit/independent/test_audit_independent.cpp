@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@
 #include "analysis/audit/effect_catalog.hpp"
 #include "../audit_cases.hpp"
 #include "independent_generator.hpp"
+#include "synthesis/audio_file.hpp"
 
 namespace ms::test {
 namespace {
@@ -82,6 +84,37 @@ void expect_bars(Tally& tally) {
 
 // Threshold tuning on this generator (disabled: --gtest_also_run_disabled_tests): every case printed.
 // Tuning seeds 40000-40999 with grid strengths; INDEPENDENT_TUNING_FIRST / _COUNT pick them.
+// Writes one case's strikes as WAV files, to audit with the command line (disabled):
+// INDEPENDENT_DUMP=DIR INDEPENDENT_SEED=S [INDEPENDENT_EFFECTS=a,b INDEPENDENT_STRENGTHS=u,v].
+TEST(AuditIndependent, DISABLED_Dump) {
+  const char* dir = std::getenv("INDEPENDENT_DUMP");
+  ASSERT_NE(dir, nullptr) << "set INDEPENDENT_DUMP=DIR";
+  const auto list = [](const char* name) {
+    std::vector<std::string> out;
+    const char* v = std::getenv(name);
+    for (std::string rest = v ? v : ""; !rest.empty();) {
+      const std::size_t comma = rest.find(',');
+      out.push_back(rest.substr(0, comma));
+      rest = comma == std::string::npos ? "" : rest.substr(comma + 1);
+    }
+    return out;
+  };
+  const std::vector<std::string> effects = list("INDEPENDENT_EFFECTS");
+  std::vector<double> strengths;
+  for (const std::string& u : list("INDEPENDENT_STRENGTHS")) strengths.push_back(std::stod(u));
+  strengths.resize(effects.size(), 0.5);
+  const indep::IndependentCase c = indep::generate_independent_case(env_or("INDEPENDENT_SEED", 40000), effects, strengths);
+  std::filesystem::create_directories(dir);
+  for (const audit::Recording& r : c.recordings) {
+    Audio a;
+    a.sample_rate_hz = r.sample_rate_hz;
+    a.channels = 1;
+    a.samples = r.samples;
+    write_wav(std::string(dir) + "/" + r.name + ".wav", a, SampleFormat::float32);
+  }
+  std::printf("%s\n", c.summary.c_str());
+}
+
 TEST(AuditIndependent, DISABLED_Tuning) {
   const Tally tally = run_cases(env_or("INDEPENDENT_TUNING_FIRST", 40000), env_or("INDEPENDENT_TUNING_COUNT", 44), true, true);
   EXPECT_GT(tally.clean, 0);
