@@ -89,7 +89,7 @@ void draw_heatmap(const std::string& path, const Confusion& c, const std::string
 void register_stats_confusion(CLI::App& group) {
   struct Options {
     std::string data, truth, response, compare, plot, interval = "newcombe";
-    std::vector<std::string> labels;
+    std::vector<std::string> labels, compare_where;
     double conf_level = 0.95;
     bool json = false;
   };
@@ -102,6 +102,11 @@ void register_stats_confusion(CLI::App& group) {
   cmd->add_option("--truth", opt->truth, "Column of the presented class")->required();
   cmd->add_option("--response", opt->response, "Column of the answered class")->required();
   cmd->add_option("--compare", opt->compare, "A second response file (same columns) to compare with");
+  cmd->add_option("--compare-where", opt->compare_where,
+                  "Rows of the --compare file to keep, COL=VALUE (repeatable), instead of --where's: two conditions "
+                  "of one export, e.g. --where condition=recorded --compare identify.csv --compare-where "
+                  "condition=synthesised")
+      ->needs("--compare");
   cmd->add_option("--labels", opt->labels, "Class order, comma separated (default: sorted)");
   cmd->add_option("--conf-level", opt->conf_level, "Level of the recall-difference intervals")
       ->check(CLI::Range(0.5, 0.9999));
@@ -116,11 +121,13 @@ void register_stats_confusion(CLI::App& group) {
     for (std::size_t i = 0; i < labels.size(); ++i)
       for (std::size_t k = 0; k < i; ++k)
         if (labels[i] == labels[k]) throw InputError(SourceLocation{}, "--labels: '" + labels[i] + "' listed twice");
-    auto read = [&](const std::string& path) {
-      return confusion_responses_from_table(read_stats_table(path, *in), opt->truth, opt->response, labels);
+    auto read = [&](const std::string& path, const StatsInput& filters) {
+      return confusion_responses_from_table(read_stats_table(path, filters), opt->truth, opt->response, labels);
     };
-    const ConfusionResponses a = read(opt->data);
-    const ConfusionResponses b = opt->compare.empty() ? ConfusionResponses{} : read(opt->compare);
+    StatsInput compare_filters = *in;
+    if (!opt->compare_where.empty()) compare_filters.where = opt->compare_where;
+    const ConfusionResponses a = read(opt->data, *in);
+    const ConfusionResponses b = opt->compare.empty() ? ConfusionResponses{} : read(opt->compare, compare_filters);
     if (labels.empty()) {
       std::set<std::string> all;
       for (const ConfusionResponses* r : {&a, &b}) {
