@@ -103,6 +103,25 @@ bool any_bounded_scale(const std::map<std::string, Protocol>& protocols) {
   return false;
 }
 
+// Does any adjust block's target state the parameters behind it (`truth:` on the target stimulus)? Only
+// then does adjust.csv get `target` and `truth` (tables of other adjust blocks stay as they always were).
+bool any_adjust_truth(const std::map<std::string, Protocol>& protocols) {
+  for (const auto& [id, p] : protocols)
+    for (const Block& b : p.blocks)
+      if (const auto* a = std::get_if<AdjustBlock>(&b.body); a && a->target)
+        if (const StimulusSource* t = p.find_stimulus(a->target->name); t && !t->truth.empty()) return true;
+  return false;
+}
+
+// The value an adjust block's target states for `key` (its `truth:`), "NA" when it states none.
+std::string adjust_truth(const Protocol* protocol, const AdjustBlock* block, const std::string& key) {
+  if (!protocol || !block || !block->target) return "NA";
+  if (const StimulusSource* t = protocol->find_stimulus(block->target->name))
+    for (const auto& [name, value] : t->truth)
+      if (name == key) return value;
+  return "NA";
+}
+
 const std::vector<std::string> kBase{"study", "participant", "session", "autopilot", "block", "trial"};
 
 const std::map<std::string, std::vector<std::string>>& type_columns() {
@@ -113,7 +132,7 @@ const std::map<std::string, std::vector<std::string>>& type_columns() {
       {"magnitude", {"first", "second", "value", "modulus_a", "modulus_b", "modulus_value"}},  // + scale_min, scale_max
       {"identify", {"stimulus", "truth", "response", "correct"}},
       {"rating", {"stimulus", "attribute", "value"}},
-      {"adjust", {"stimulus", "key", "value", "plays", "rt_ms"}},
+      {"adjust", {"stimulus", "key", "value", "plays", "rt_ms"}},  // + target, truth
       {"staircase", {"stimulus", "parameter", "step", "level", "next_level", "correct", "threshold"}},  // + chosen
       {"limits", {"stimulus", "reference", "parameter", "step", "level", "response", "different", "threshold", "censored"}},
       {"tokens", {"stimulus", "step", "reference", "comparison", "response", "different", "distinguished", "tokens"}},
@@ -184,6 +203,7 @@ std::map<std::string, std::string> tidy_tables(const std::vector<ResponseRow>& r
   std::vector<std::string> factors = factor_names(protocols);
   const bool staircase_choices = any_staircase_choices(rows);
   const bool scale_columns = any_bounded_scale(protocols);
+  const bool truth_columns = any_adjust_truth(protocols);
   std::map<std::string, std::string> out;
   for (const ResponseRow& r : rows) {
     const auto cols = type_columns().find(r.block_type);
@@ -197,6 +217,7 @@ std::map<std::string, std::string> tidy_tables(const std::vector<ResponseRow>& r
       header.insert(header.end(), cols->second.begin(), cols->second.end());
       if (r.block_type == "staircase" && staircase_choices) header.push_back("chosen");
       if (r.block_type == "magnitude" && scale_columns) header.insert(header.end(), {"scale_min", "scale_max"});
+      if (r.block_type == "adjust" && truth_columns) header.insert(header.end(), {"target", "truth"});
       // A factor named like a column gets a suffix rather than a duplicate column.
       for (const std::string& f : factors)
         header.push_back(std::find(header.begin(), header.end(), f) == header.end() ? f : f + "_factor");
@@ -255,8 +276,13 @@ std::map<std::string, std::string> tidy_tables(const std::vector<ResponseRow>& r
     } else if (const auto* rating = std::get_if<RatingAnswer>(&answer)) {
       for (const auto& [attr, value] : rating->points) add({at(0), attr, std::to_string(value)}, at(0));
     } else if (const auto* adjust = std::get_if<AdjustAnswer>(&answer)) {
-      for (const auto& [key, value] : adjust->values)
-        add({at(0), key, cell(value), std::to_string(r.plays), cell(r.rt_ms)}, at(0));
+      const auto* ab = block ? std::get_if<AdjustBlock>(&block->body) : nullptr;
+      for (const auto& [key, value] : adjust->values) {
+        std::vector<std::string> row{at(0), key, cell(value), std::to_string(r.plays), cell(r.rt_ms)};
+        if (truth_columns)
+          row.insert(row.end(), {ab && ab->target ? ab->target->name : "NA", adjust_truth(protocol, ab, key)});
+        add(std::move(row), at(0));
+      }
     } else if (const auto* track = std::get_if<StaircaseAnswer>(&answer)) {
       const auto* sb = block ? std::get_if<StaircaseBlock>(&block->body) : nullptr;
       for (std::vector<std::string>& row : staircase_rows(*track, sb, at(0), staircase_choices)) add(std::move(row), at(0));

@@ -20,8 +20,8 @@
 
 namespace {
 
-const std::vector<std::string> kReplications = {"vandendoel2002", "sterling2019", "ren2013_materials",
-                                                "ab_synthesis_methods"};
+const std::vector<std::string> kReplications = {"vandendoel2002", "sterling2019", "sterling2019_handtuning",
+                                                "ren2013_materials", "ab_synthesis_methods"};
 
 std::string protocol_path(const std::string& name) {
   return std::string(MODALSTUDY_SOURCE_DIR) + "/protocols/" + name + ".yaml";
@@ -156,24 +156,86 @@ TEST(ReplicationProtocols, Sterling2019KeepsThePapersDesign) {
   EXPECT_EQ(trials_of(s, "material").size() + trials_of(s, "shape").size() + trials_of(s, "ratings").size(), 120u);
 }
 
-// Ren et al. 2013: 16 synthesised clips (3 shapes x 4 materials + 4 glass bowls), five labels; the
+// Sterling et al. 2019, section 1.3.2: a training object, then six discs in random order, in two sections:
+// three parameters (Rayleigh alpha1, alpha2, gamma = E/rho) and two (alpha1, alpha2). Each target states
+// the parameters behind it (`truth:`, what adjust.csv's truth column carries), they are the ones the
+// target is rendered with, and each lies inside its slider's range but away from its middle (where the
+// slider starts).
+TEST(ReplicationProtocols, Sterling2019HandTuningKeepsThePapersDesign) {
+  const ms::Protocol p = load("sterling2019_handtuning");
+  const std::vector<std::string> objects = {"porcelain", "travertine", "wood", "steel", "plastic", "glass"};
+  for (const std::string section : {"three", "two"}) {
+    const std::vector<std::string> keys =
+        section == "three" ? std::vector<std::string>{"damping.alpha1", "damping.alpha2", "specific_modulus_m2_s2"}
+                           : std::vector<std::string>{"damping.alpha1", "damping.alpha2"};
+    const ms::Block& training = block(p, "training-" + section);
+    EXPECT_TRUE(training.training);
+    EXPECT_EQ(std::get<ms::AdjustBlock>(training.body).target->name, "target-cymbal");
+    for (const std::string& object : objects) {
+      const ms::Block& b = block(p, section + "-" + object);
+      EXPECT_FALSE(b.training);
+      EXPECT_EQ(b.shuffle, section);  // the six in an order drawn per participant
+      const auto& adjust = std::get<ms::AdjustBlock>(b.body);
+      ASSERT_TRUE(adjust.target.has_value());
+      const ms::StimulusSource* target = p.find_stimulus(adjust.target->name);
+      ASSERT_NE(target, nullptr);
+      std::map<std::string, std::string> truth(target->truth.begin(), target->truth.end()), rendered;
+      for (const std::string& o : target->overrides) rendered[o.substr(0, o.find('='))] = o.substr(o.find('=') + 1);
+      std::vector<std::string> slider_keys;
+      for (const ms::Slider& sl : adjust.sliders) {
+        slider_keys.push_back(sl.key);
+        ASSERT_EQ(truth.count(sl.key), 1u) << object << " " << sl.key;
+        EXPECT_EQ(std::stod(truth.at(sl.key)), std::stod(rendered.at(sl.key))) << object << " " << sl.key;
+        const double position = (std::stod(truth.at(sl.key)) - sl.min) / (sl.max - sl.min);
+        EXPECT_GT(position, 0.15) << object << " " << sl.key;
+        EXPECT_LT(position, 0.85) << object << " " << sl.key;
+        EXPECT_GT(std::abs(position - 0.5), 0.1) << object << " " << sl.key;
+      }
+      EXPECT_EQ(slider_keys, keys) << object;
+    }
+  }
+  const auto order = [&](const std::string& participant) {
+    std::vector<std::string> blocks;
+    for (const auto& t : ms::make_schedule(p, participant).trials)
+      if (t.block_id.rfind("three-", 0) == 0) blocks.push_back(t.block_id);
+    return blocks;
+  };
+  EXPECT_EQ(order("P01").size(), 6u);
+  EXPECT_NE(order("P01"), order("P02"));
+}
+
+// Ren et al. 2013: 16 synthesised clips (3 shapes x 4 materials + 4 glass bowls) and the recorded
+// condition, 6 real recordings (two each of metal, wood and glass) in the same series; five labels; the
 // plates are named as their label so the plate confusion matrix reads directly.
 TEST(ReplicationProtocols, Ren2013KeepsThePapersDesign) {
   const ms::Protocol p = load("ren2013_materials");
   const auto& id = std::get<ms::IdentifyBlock>(block(p, "material").body);
   EXPECT_EQ(id.labels, (std::vector<std::string>{"wood", "plastic", "metal", "porcelain", "glass"}));
-  EXPECT_EQ(id.stimuli.size(), 16u);
-  std::map<std::string, int> per_label;
-  for (const auto& s : names(id.stimuli)) {
-    const std::string truth = s.substr(0, s.find('-'));
-    EXPECT_NE(std::find(id.labels.begin(), id.labels.end(), truth), id.labels.end()) << s;
-    ++per_label[truth];
+  EXPECT_EQ(id.stimuli.size(), 22u);
+  const auto factor = [](const ms::StimulusSource& s, const std::string& name) {
+    for (const auto& [n, level] : s.factors)
+      if (n == name) return level;
+    return std::string();
+  };
+  std::map<std::string, std::map<std::string, int>> per_label;  // condition -> truth -> clips
+  for (const auto& name : names(id.stimuli)) {
+    const ms::StimulusSource* s = p.find_stimulus(name);
+    ASSERT_NE(s, nullptr) << name;
+    ASSERT_EQ(s->truth.size(), 1u) << name;
+    const std::string truth = s->truth.front().second, condition = factor(*s, "condition");
+    EXPECT_NE(std::find(id.labels.begin(), id.labels.end(), truth), id.labels.end()) << name;
+    EXPECT_EQ(factor(*s, "material"), truth) << name;
+    EXPECT_EQ(s->kind == ms::StimulusKind::file, condition == "recorded") << name;
+    ++per_label[condition][truth];
   }
   for (const auto& label : id.labels) {
-    EXPECT_EQ(per_label[label], label == "glass" ? 4 : 3) << label;  // 3 shapes, or 4 glass bowl sizes
+    EXPECT_EQ(per_label["synthesised"][label], label == "glass" ? 4 : 3) << label;  // 3 shapes, or 4 bowl sizes
     EXPECT_NE(p.find_stimulus(label), nullptr) << label;  // the label-named plate (glass: the size-1 bowl)
   }
-  EXPECT_EQ(trials_of(ms::make_schedule(p, "P01"), "material").size(), 16u);
+  // hydrogen-drumkits has metal, wood and glass objects; no plastic or porcelain one.
+  EXPECT_EQ(per_label["recorded"], (std::map<std::string, int>{{"glass", 2}, {"metal", 2}, {"wood", 2}}));
+  EXPECT_EQ(per_label.size(), 2u);
+  EXPECT_EQ(trials_of(ms::make_schedule(p, "P01"), "material").size(), 22u);
 }
 
 // Skandalou & Ireland 2017: -3..+3 comparison of sinusoidal vs filter-based synthesis, each pair

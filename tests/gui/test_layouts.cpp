@@ -106,4 +106,4 @@ TEST_P(Layout, EveryBlockFitsSmallAndScaledScreens) {
 
 INSTANTIATE_TEST_SUITE_P(Shipped, Layout,
                          ::testing::Values("demo", "ab_synthesis_methods", "ren2013_materials", "sterling2019",
-                                           "vandendoel2002", "skandalou2017_changepoint", "mushra11"));
+                                           "sterling2019_handtuning", "vandendoel2002", "skandalou2017_changepoint", "mushra11"));
