@@ -151,4 +151,5 @@ TEST_P(ShippedProtocol, WholeSessionThroughTheViews) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Replications, ShippedProtocol,
-                         ::testing::Values("ab_synthesis_methods", "ren2013_materials", "skandalou2017_changepoint"));
+                         ::testing::Values("ab_synthesis_methods", "ren2013_materials", "skandalou2017_changepoint",
+                                           "sterling2019_handtuning"));
