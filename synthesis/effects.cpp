@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <random>
 
+#include "synthesis/fft.hpp"
+
 namespace ms {
 
 void apply_support_damping(ModalModel& model, const SupportDamping& support) {
@@ -104,6 +106,46 @@ void add_decaying_noise(std::vector<float>& samples, double sample_rate_hz, doub
   }
 }
 
+double band_power_share(double low_hz, double high_hz, double sample_rate_hz) {
+  if (high_hz <= 0.0) return 1.0;
+  const double nyquist = 0.5 * sample_rate_hz;
+  return std::max(std::min(high_hz, nyquist) - std::max(low_hz, 0.0), 1e-9 * nyquist) / nyquist;
+}
+
+namespace {
+
+// The burst's noise band-limited: stationary white noise cut to [low, high] (circularly: it has no
+// onset to ring before), scaled to unit variance, then given add_decaying_noise's envelope. Its power
+// spectrum is the band's, blurred by the envelope's own width (1 / the decay time).
+void add_band_limited_burst(std::vector<float>& samples, const std::vector<float>& direct, double sample_rate_hz,
+                            const AttackTransient& t) {
+  const double t60_s = 1e-3 * t.duration_ms;
+  const std::size_t span = std::min(direct.size(), std::size_t(4.0 * t60_s * sample_rate_hz) + 1);  // 240 dB down
+  double energy = 0.0;
+  for (float v : direct) energy += double(v) * v;
+  const double sigma0 = std::sqrt(decaying_noise_variance(energy, sample_rate_hz, direct.size(), t60_s, t.level_db));
+  const double k = std::log(1000.0) / (t60_s * sample_rate_hz);
+  std::mt19937_64 rng(t.seed);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  RealFft fft(nice_fft_size(span), RealFft::Directions::forward_and_backward);
+  const std::size_t n = fft.size();
+  for (std::size_t i = 0; i < n; ++i) fft.real()[i] = gauss(rng);
+  fft.forward();
+  const double bin_hz = sample_rate_hz / double(n);
+  std::size_t kept = 0;
+  for (std::size_t b = 0; b <= n / 2; ++b) {
+    const double f = double(b) * bin_hz;
+    if (f < t.low_hz || f > t.high_hz) fft.spectrum()[b] = 0.0;
+    else kept += b == 0 || 2 * b == n ? 1 : 2;  // the bins' share of the variance
+  }
+  fft.backward();
+  const double unit = 1.0 / (double(n) * std::sqrt(std::max<double>(double(kept), 1.0) / double(n)));
+  for (std::size_t i = 0; i < samples.size() && i < span; ++i)
+    samples[i] = float(samples[i] + sigma0 * std::exp(-k * double(i)) * fft.real()[i] * unit);
+}
+
+}  // namespace
+
 void add_reverb_and_transient(std::vector<float>& samples, double sample_rate_hz, const Reverb& reverb,
                               const AttackTransient& transient) {
   const std::vector<float> direct = samples;
@@ -112,7 +154,9 @@ void add_reverb_and_transient(std::vector<float>& samples, double sample_rate_hz
     add_decaying_noise(tail, sample_rate_hz, reverb.rt60_s, reverb.level_db, reverb.seed);
     for (std::size_t i = 0; i < samples.size(); ++i) samples[i] += tail[i] - direct[i];
   }
-  if (transient.enabled) {
+  if (transient.enabled && transient.band_limited()) {
+    add_band_limited_burst(samples, direct, sample_rate_hz, transient);
+  } else if (transient.enabled) {
     std::vector<float> burst(direct);
     add_decaying_noise(burst, sample_rate_hz, 1e-3 * transient.duration_ms, transient.level_db, transient.seed);
     for (std::size_t i = 0; i < samples.size(); ++i) samples[i] += burst[i] - direct[i];

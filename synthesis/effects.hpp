@@ -71,6 +71,10 @@ struct AttackTransient {
   double duration_ms = 0.0;  // burst decays 60 dB in this time
   std::uint64_t seed = 0;
   bool enabled = false;
+  // The burst's band (a stick's click rings in the striker's own band): both 0 = white. Inside
+  // [low_hz, high_hz] its spectrum is flat; the level stays the burst's whole energy.
+  double low_hz = 0.0, high_hz = 0.0;
+  bool band_limited() const { return high_hz > 0.0; }
 };
 
 // White Gaussian noise with standard deviation sigma0 exp(-ln(1000) t / t60_s) from sample 0, sigma0
@@ -81,6 +85,10 @@ void add_decaying_noise(std::vector<float>& samples, double sample_rate_hz, doub
 // sigma0^2 of add_decaying_noise for a direct sound of energy sum(x^2) = direct_energy over n samples.
 double decaying_noise_variance(double direct_energy, double sample_rate_hz, std::size_t n, double t60_s,
                                double energy_db);
+
+// Share of a white noise's power that a band [low_hz, high_hz] keeps (1 for white): the burst's
+// variance is divided by it, so that its energy stays level_db whatever its band.
+double band_power_share(double low_hz, double high_hz, double sample_rate_hz);
 
 // Both relative to the direct sound `samples` holds when called (neither sees the other's noise).
 void add_reverb_and_transient(std::vector<float>& samples, double sample_rate_hz, const Reverb& reverb,

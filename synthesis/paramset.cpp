@@ -346,6 +346,8 @@ std::string canonical_recipe(const ParamSet& p) {
   if (p.transient.enabled)
     add("transient %.17g %.17g %llu\n", p.transient.level_db, p.transient.duration_ms,
         (unsigned long long)p.transient.seed);
+  if (p.transient.enabled && p.transient.band_limited())
+    add("transient_band %.17g %.17g\n", p.transient.low_hz, p.transient.high_hz);
   if (p.residual.spectrogram)
     add("residual %s %.17g %llu\n", p.residual.sha256.c_str(), p.residual.gain_db, (unsigned long long)p.residual.seed);
   if (p.renderer == Renderer::bandpass) {

@@ -270,13 +270,20 @@ void RecipeReader::effects(const YAML::Node& fx) const {
     out.reverb.enabled = true;
   }
   if (const YAML::Node n = fx["transient"]) {
-    r.check_keys(n, "effects.transient", {"level_db", "duration_ms", "seed"});
+    r.check_keys(n, "effects.transient", {"level_db", "duration_ms", "seed", "band_hz"});
     needs(n, "effects.transient", {"level_db", "duration_ms"});
     out.transient.level_db = within(n["level_db"], "effects.transient.level_db", -120, 20, "[-120, 20] dB");
     out.transient.duration_ms = r.positive(n["duration_ms"], "effects.transient.duration_ms");
     if (out.transient.duration_ms > 100)
       r.fail(n["duration_ms"], "effects.transient.duration_ms", "must lie in (0, 100] ms (a longer burst is not an attack)");
     out.transient.seed = seed(n, "effects.transient");
+    if (const YAML::Node band = n["band_hz"]) {
+      const std::vector<double> edges = r.numbers(band, "effects.transient.band_hz");
+      if (edges.size() != 2 || !(edges[0] >= 0.0 && edges[0] < edges[1] && edges[1] <= 0.5 * out.sample_rate_hz))
+        r.fail(band, "effects.transient.band_hz", "must be [low, high] with 0 <= low < high <= Nyquist (Hz)");
+      out.transient.low_hz = edges[0];
+      out.transient.high_hz = edges[1];
+    }
     out.transient.enabled = true;
   }
   if (const YAML::Node n = fx["noise"]) {

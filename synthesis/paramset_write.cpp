@@ -179,9 +179,17 @@ void RecipeWriter::effects(const ParamSetRecipe& r) {
   }
   if (r.reverb.enabled)
     seeded_noise("reverb", {{"rt60_s", r.reverb.rt60_s}, {"level_db", r.reverb.level_db}}, r.reverb.seed);
-  if (r.transient.enabled)
+  if (r.transient.enabled && r.transient.band_limited()) {
+    begin_flow("transient");
+    number("level_db", r.transient.level_db);
+    number("duration_ms", r.transient.duration_ms);
+    numbers("band_hz", {r.transient.low_hz, r.transient.high_hz});
+    seed(r.transient.seed);
+    end();
+  } else if (r.transient.enabled) {
     seeded_noise("transient", {{"level_db", r.transient.level_db}, {"duration_ms", r.transient.duration_ms}},
                  r.transient.seed);
+  }
   out << YAML::EndMap;
 }
 
