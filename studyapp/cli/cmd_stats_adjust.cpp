@@ -6,6 +6,7 @@
 // adjust.csv as written: `modalstudy stats adjust adjust.csv --object object --group section`.
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
@@ -36,17 +37,19 @@ std::string box_text(const BoxSummary& b, int digits) {
 }
 
 void print_summary(const AdjustSummary& s) {
+  int gw = 5, ow = 13;  // column widths: the longest group and object names
+  for (const AdjustObject& o : s.objects) gw = std::max(gw, int(o.group.size())), ow = std::max(ow, int(o.object.size()));
   std::printf("Time (s) and sounds played per answer: lower whisker [q1 median q3] upper whisker, o outliers\n");
-  std::printf("%-10s %-14s %4s  %-38s %s\n", "group", "object", "n", "time (s)", "sounds played");
+  std::printf("%-*s %-*s %4s  %-38s %s\n", gw, "group", ow, "object", "n", "time (s)", "sounds played");
   for (const AdjustObject& o : s.objects)
-    std::printf("%-10s %-14s %4zu  %-38s %s\n", o.group.c_str(), o.object.c_str(), o.time_s.n, box_text(o.time_s, 3).c_str(),
-                box_text(o.plays, 3).c_str());
+    std::printf("%-*s %-*s %4zu  %-38s %s\n", gw, o.group.c_str(), ow, o.object.c_str(), o.time_s.n,
+                box_text(o.time_s, 3).c_str(), box_text(o.plays, 3).c_str());
   for (const AdjustGroup& g : s.groups)
-    std::printf("%-10s %-14s %4zu  %-38s %s\n", g.group.c_str(), "(all objects)", g.time_s.n, box_text(g.time_s, 3).c_str(),
-                box_text(g.plays, 3).c_str());
+    std::printf("%-*s %-*s %4zu  %-38s %s\n", gw, g.group.c_str(), ow, "(all objects)", g.time_s.n,
+                box_text(g.time_s, 3).c_str(), box_text(g.plays, 3).c_str());
   std::printf("\nChosen values: median [q1, q3], mean, sd; error log10(chosen / true): median, mean, rms\n");
-  std::printf("%-10s %-14s %-24s %4s  %-34s %10s %10s  %10s  %8s %8s %8s\n", "group", "object", "key", "n", "median [q1, q3]",
-              "mean", "sd", "true", "median", "mean", "rms");
+  std::printf("%-*s %-*s %-24s %4s  %-34s %10s %10s  %10s  %8s %8s %8s\n", gw, "group", ow, "object", "key", "n",
+              "median [q1, q3]", "mean", "sd", "true", "median", "mean", "rms");
   for (const AdjustObject& o : s.objects)
     for (const AdjustParameter& p : o.parameters) {
       const std::string spread = format_g(p.chosen.median, 4) + " [" + format_g(p.chosen.q1, 4) + ", " +
@@ -56,8 +59,8 @@ void print_summary(const AdjustSummary& s) {
         error = fmt("%8.3f", p.log10_ratio->median) + " " + fmt("%8.3f", p.log10_ratio_mean) + " " +
                 fmt("%8.3f", p.log10_ratio_rms) +
                 (p.not_positive ? "  (" + std::to_string(p.not_positive) + " not positive, left out)" : "");
-      std::printf("%-10s %-14s %-24s %4zu  %-34s %10s %10s  %10s  %s\n", o.group.c_str(), o.object.c_str(), p.key.c_str(),
-                  p.chosen.n, spread.c_str(), format_g(p.mean, 4).c_str(), format_g(p.sd, 3).c_str(),
+      std::printf("%-*s %-*s %-24s %4zu  %-34s %10s %10s  %10s  %s\n", gw, o.group.c_str(), ow, o.object.c_str(),
+                  p.key.c_str(), p.chosen.n, spread.c_str(), format_g(p.mean, 4).c_str(), format_g(p.sd, 3).c_str(),
                   p.truth ? format_g(*p.truth, 4).c_str() : "-", error.c_str());
     }
 }
