@@ -25,6 +25,9 @@ constexpr double kWithinDb = 40.0;       // modes this far below the strongest c
 constexpr std::size_t kMaxRank = 3;      // patterns beyond three are not hit points but scatter
 constexpr double kMinImprovementDb = 0.5;  // held-out-half RMS improvement over a gain alone, dB
 constexpr double kDbPerNeper = 8.685889638065035;
+// A mode near a node of its shape at some strike's hit point all but vanishes there: its log residual
+// would dominate every fit. Residuals are read within -+13 dB.
+constexpr double kMaxResidualLn = 1.5;
 
 // The modes' log-amplitude residuals ln(measured / model without a hit pattern) on the strikes given:
 // rows strikes, columns the modes present in all of them and within kWithinDb of the strongest.
@@ -61,7 +64,8 @@ Residuals residuals(const AuditData& data, const AuditModel& model, const std::v
     for (std::size_t j = 0; j < r.modes.size(); ++j) {
       const std::size_t n = r.modes[j];
       const TrackObservation& o = data.tracks[std::size_t(model.modes[n].track)].strikes[strikes[i]];
-      r.ln(Eigen::Index(i), Eigen::Index(j)) = std::log(o.amp / strike_amp(plain, strikes[i], n));
+      r.ln(Eigen::Index(i), Eigen::Index(j)) =
+          std::clamp(std::log(o.amp / strike_amp(plain, strikes[i], n)), -kMaxResidualLn, kMaxResidualLn);
     }
   return r;
 }
