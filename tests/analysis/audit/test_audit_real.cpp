@@ -183,5 +183,22 @@ TEST(AuditReal, AgogoModesKeepNoAmplitudePatternAndNoContactTilt) {
   }
 }
 
+// ... and so the audit does not name it: the contact the fit would reach on the low agogo (3.9-5.7 ms,
+// harder strikes shorter) has its first spectral zero below every mode, placing zeros among scattered
+// modes instead of low-passing them (the detector's main-lobe guard).
+TEST(AuditReal, AgogosAreNotNamedContactDuration) {
+  REQUIRE_KITS();
+  for (const char* agogo : {"AgogoHigh", "AgogoLow"}) {
+    std::vector<std::string> files;
+    for (int i = 0; i < 5; ++i) files.push_back(std::string(agogo) + "-" + std::to_string(i) + ".wav");
+    const AuditResult r = run_audit(make_audit_data(load("ForzeeStereo", files)));
+    std::printf("%s: ", agogo);
+    EXPECT_FALSE(has(named(r), "contact_duration")) << agogo;
+    for (const auto& round : r.rounds)
+      for (const Candidate& c : round)
+        if (c.effect == "contact_duration") EXPECT_FALSE(c.detector_passes) << agogo << ": " << c.note;
+  }
+}
+
 }  // namespace
 }  // namespace ms::audit
