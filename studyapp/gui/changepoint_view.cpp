@@ -20,24 +20,29 @@ class ChangepointView : public TrialView {
     add_prompt("The sounds are one object whose material changes little by little. Listen to them in order and "
                "mark each sound at which, in your opinion, the material changed (any number, or none).");
     add_sequence_button(QString::fromUtf8("\u25B6 Play all in order"), int(names.size()));
-    // One row per sound: its play button, then (from the second sound on) its mark.
+    // Per sound its play button, then (from the second sound on) its mark; in order down one column, or
+    // down three for a long sweep (19 sounds fit a 1024x600 screen without scrolling).
+    const std::size_t columns = names.size() > 12 ? 3 : 1;
+    const std::size_t rows = (names.size() + columns - 1) / columns;
     auto* sweep = new QWidget(body());
     auto* grid = new QGridLayout(sweep);
     grid->setContentsMargins(0, 0, 0, 0);
-    grid->setColumnStretch(2, 1);
+    grid->setHorizontalSpacing(6);
     for (std::size_t i = 0; i < names.size(); ++i) {
-      const int row = int(i);
-      grid->addWidget(make_play_button(QString("Sound %1").arg(i + 1), false, sweep), row, 0);
+      const int row = int(i % rows), column = 2 * int(i / rows);
+      grid->addWidget(make_play_button(QString("Sound %1").arg(i + 1), false, sweep), row, column);
       auto* mark = new QPushButton(QString("Changed here"), sweep);
       mark->setObjectName(QString("mark-%1").arg(i));
       mark->setCheckable(true);
       mark->setFocusPolicy(Qt::NoFocus);
+      mark->setStyleSheet("QPushButton:checked { background-color: #24466e; color: white; }");  // as the browser's
       mark->setEnabled(false);
       mark->setVisible(i > 0);  // nothing comes before the first sound
-      grid->addWidget(mark, row, 1);
+      grid->addWidget(mark, row, column + 1);
       marks_.push_back(mark);
     }
-    grid->addWidget(make_stop_button(sweep), int(names.size()), 0);
+    grid->setColumnStretch(int(2 * columns), 1);
+    grid->addWidget(make_stop_button(sweep), int(rows), 0);
     layout_->addWidget(sweep);
     add_next([this] {
       ChangepointAnswer a;

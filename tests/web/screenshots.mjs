@@ -1,6 +1,6 @@
 // Pictures of the browser client for the README: the demo study in Debian's chromium at 1024x600
-// (docs/images/web-*.png) and at a device scale of 1.5 (build/web-shots-150/), one per block type, and
-// the experimenter page. Not a test; run by hand after a build:
+// (docs/images/web-*.png) and at a device scale of 1.5 (build/web-shots-150/), one per block type, a
+// whole 19-sound sweep of the change-point replication, and the experimenter page. Not a test; run by hand after a build:
 //   MODALSTUDY_BIN=build/bin/modalstudy node tests/web/screenshots.mjs [OUTDIR]
 import { mkdirSync } from 'node:fs';
 import { join } from 'node:path';
@@ -31,12 +31,30 @@ for (const [scale, dir] of [[1, out], [1.5, join(source, 'build', 'web-shots-150
     if (wanted) shot.add(s.type);
     await p.next();
   }
+  // A whole Q sweep of the change-point replication (19 sounds): it fits with Next in sight.
+  const sweepServe = await startServe(workDir(), join(source, 'protocols', 'skandalou2017_changepoint.yaml'), 1, 'sweep');
+  const sweepPage = await context.newPage();
+  const sweeper = new Participant(sweepPage);
+  await sweepPage.goto(sweepServe.links[0]);
+  for (let screens = 0; screens < 4; ++screens) {
+    const s = await sweeper.nextScreen();
+    if (s.kind === 'trial' && s.type === 'changepoint') {
+      await sweeper.answer(s);
+      await sweepPage.locator('#mark-12').click();
+      await sweepPage.evaluate(() => window.scrollTo(0, 0));
+      await sweepPage.screenshot({ path: join(dir, 'web-changepoint-sweep.png') });
+      break;
+    }
+    await sweeper.answer(s);
+    await sweeper.next();
+  }
+  await sweepServe.stop();
   const x = await context.newPage();
   await x.goto(serve.experimenter);
   await x.waitForSelector('#participants tr[data-participant="web-001"]');
   await x.screenshot({ path: join(dir, 'web-experimenter.png') });
   await context.close();
   await serve.stop();
-  console.log(`${dir}: ${[...shot].map((t) => `web-${t}.png`).join(' ')} web-experimenter.png`);
+  console.log(`${dir}: ${[...shot].map((t) => `web-${t}.png`).join(' ')} web-changepoint-sweep.png web-experimenter.png`);
 }
 await browser.close();

@@ -9,9 +9,15 @@ export default function changepoint(trial) {
                 'mark each sound at which, in your opinion, the material changed (any number, or none).');
   sequenceButton(trial, allIndices(page), '▶ Play all in order');
   const marks = [];
-  const list = el('div', { class: 'sweep', style: `grid-template-rows: repeat(${Math.ceil(page.sounds.length / 2)}, auto)` });
+  // Down two columns, three for long sweeps, so a sweep of 19 fits a 1024x600 screen with Next in sight
+  // (set through the CSSOM: the page's CSP refuses style attributes).
+  const list = el('div', { class: 'sweep' });
+  const columns = page.sounds.length > 12 ? 3 : 2;
+  list.style.gridTemplateColumns = `repeat(${columns}, minmax(0, 1fr))`;
+  list.style.gridTemplateRows = `repeat(${Math.ceil(page.sounds.length / columns)}, auto)`;
   for (const i of allIndices(page)) {
-    const play = el('button', { type: 'button', class: 'sound', id: `play-${i}`, text: `▶ ${page.sounds[i].label}` });
+    const play = el('button', { type: 'button', class: 'sound', id: `play-${i}`, text: `▶ ${i + 1}`,
+                                'aria-label': page.sounds[i].label });
     play.addEventListener('click', () => trial.player.play(i));
     trial.soundButtons[i] = play;
     const row = el('div', { class: 'sweep-row' }, play);
