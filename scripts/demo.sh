@@ -45,6 +45,10 @@ build/bin/modalstudy stats staircase "$study/export/staircase.csv" --level level
 echo "== method of limits (a_v, dB): the level before the first change heard, one series per participant"
 build/bin/modalstudy stats limits "$study/export/limits.csv" --level level --response response \
   --track participant,block,trial
+echo "== adaptive tokens: tokens each participant distinguished, of the sequence's 6 (van den Doel 2002, Table 2)"
+build/bin/modalstudy stats tokens "$study/export/tokens.csv"
+echo "== change points: sweeps marking a material change at each Q (Skandalou & Ireland 2017, Fig. 5.4)"
+build/bin/modalstudy stats changepoint "$study/export/changepoint.csv"
 echo
 echo "Stimuli: $(pwd)/build/stimuli/ (WAV files, manifest.json with SHA-256 and recipe hashes)"
 echo "Study:   $(pwd)/$study/ (results.sqlite, export/*.csv, mushra.png, confusion.png)"
