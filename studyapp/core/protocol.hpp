@@ -1,5 +1,5 @@
 // Protocol model: a listening study as read from protocols/*.yaml (DESIGN.md §4) — named stimuli
-// (parameter set + overrides, derived anchor, recording) and an ordered list of typed blocks.
+// (parameter set + overrides, derived anchor, recording, sequence of other stimuli) and an ordered list of typed blocks.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -20,7 +20,13 @@ struct StimulusRef {
 };
 using StimulusPair = std::array<StimulusRef, 2>;
 
-enum class StimulusKind { paramset, derived, file };
+enum class StimulusKind { paramset, derived, file, sequence };
+
+// One strike of a sequence stimulus: another stimulus of the protocol, from its onset on, at its gain.
+struct SequencePart {
+  StimulusRef stimulus;
+  double onset_s = 0.0, gain_db = 0.0;
+};
 
 struct StimulusSource {
   std::string name;
@@ -32,6 +38,7 @@ struct StimulusSource {
   std::vector<SourceLocation> override_where;  // where each of `overrides` was written
   StimulusRef derive_from;            // kind == derived
   double lowpass_hz = 0.0;
+  std::vector<SequencePart> sequence; // kind == sequence: the strikes, onsets rising (stimulus_sequence.hpp)
   bool implicit = false;              // created by `anchors: auto`, not written by the author
   // What an identification answer should be: attribute -> label ({shape: disc, material: metal}), or
   // one label under the key "" (`truth: metal`). Exported as the `truth` column.

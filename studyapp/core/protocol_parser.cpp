@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "studyapp/core/stimulus_sequence.hpp"
 #include "synthesis/bounded_file.hpp"
 #include "synthesis/yaml_reader.hpp"
 
@@ -92,14 +93,53 @@ std::vector<std::pair<std::string, std::string>> labels_map(const YamlReader& r,
   return out;
 }
 
+// {sequence: [a, b, ...], onsets_s: [...], gains_db: [...]}: one onset (and optionally one gain) per
+// named stimulus, the onsets rising strictly from >= 0 (stimulus_sequence.hpp).
+std::vector<SequencePart> parse_sequence(const YamlReader& r, const YAML::Node& n, const std::string& path,
+                                         const std::string& name) {
+  const YAML::Node names = n["sequence"];
+  if (!names.IsSequence() || names.size() == 0)
+    r.fail(names, path + ".sequence", "expected a list of stimulus names, the strikes in the order they sound");
+  std::vector<SequencePart> parts;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    parts.push_back(SequencePart{ref(r, names[i], idx(path + ".sequence", i))});
+    if (parts.back().stimulus.name == name)
+      r.fail(names[i], idx(path + ".sequence", i), "a sequence cannot contain itself");
+  }
+  // A list of one number per part, each checked by `value`.
+  const auto per_part = [&](const char* key, const char* what, auto&& value) {
+    const YAML::Node list = n[key];
+    const std::string at = path + "." + key;
+    if (!list.IsSequence()) r.fail(list, at, std::string("expected a list of ") + what + ", one per stimulus of 'sequence'");
+    if (list.size() != parts.size())
+      r.fail(list, at, "has " + std::to_string(list.size()) + " values but 'sequence' names " +
+                           std::to_string(parts.size()) + " stimuli: give one per stimulus");
+    for (std::size_t i = 0; i < list.size(); ++i) value(list[i], idx(at, i), i);
+  };
+  if (!n["onsets_s"]) r.fail(n, path, "a sequence needs 'onsets_s': when each stimulus starts, in seconds");
+  per_part("onsets_s", "onsets in seconds", [&](const YAML::Node& v, const std::string& at, std::size_t i) {
+    parts[i].onset_s = r.non_negative(v, at);
+    if (parts[i].onset_s > kSequenceMaxS) r.fail(v, at, "absurd onset (more than 600 s)");
+    if (i > 0 && parts[i].onset_s <= parts[i - 1].onset_s)
+      r.fail(v, at, "onsets must rise: " + v.Scalar() + " s is not later than the onset before it");
+  });
+  if (n["gains_db"])
+    per_part("gains_db", "gains in dB", [&](const YAML::Node& v, const std::string& at, std::size_t i) {
+      parts[i].gain_db = r.number(v, at);
+      if (parts[i].gain_db < kSequenceGainDbMin || parts[i].gain_db > kSequenceGainDbMax)
+        r.fail(v, at, "a gain must lie between -120 and +40 dB, got " + v.Scalar());
+    });
+  return parts;
+}
+
 StimulusSource parse_stimulus(const YamlReader& r, const YAML::Node& key, const YAML::Node& n) {
   StimulusSource s;
   s.name = r.text(key, "stimuli");
   const std::string path = "stimuli." + s.name;
   s.where = r.where(key, path);
-  if (!n.IsMap()) r.fail(n, path, "expected {paramset: ...}, {derive: ...} or {file: ...}");
-  const int kinds = int(bool(n["paramset"])) + int(bool(n["derive"])) + int(bool(n["file"]));
-  if (kinds != 1) r.fail(n, path, "needs exactly one of 'paramset', 'derive' or 'file'");
+  if (!n.IsMap()) r.fail(n, path, "expected {paramset: ...}, {derive: ...}, {file: ...} or {sequence: ...}");
+  const int kinds = int(bool(n["paramset"])) + int(bool(n["derive"])) + int(bool(n["file"])) + int(bool(n["sequence"]));
+  if (kinds != 1) r.fail(n, path, "needs exactly one of 'paramset', 'derive', 'file' or 'sequence'");
   if (n["paramset"]) {
     r.check_keys(n, path, {"paramset", "set", "prune", "truth", "factors"});
     s.kind = StimulusKind::paramset;
@@ -113,6 +153,10 @@ StimulusSource parse_stimulus(const YamlReader& r, const YAML::Node& key, const 
     s.derive_from = ref(r, n["derive"], path + ".derive");
     if (!n["lowpass_hz"]) r.fail(n, path, "a derived stimulus needs 'lowpass_hz'");
     s.lowpass_hz = r.positive(n["lowpass_hz"], path + ".lowpass_hz");
+  } else if (n["sequence"]) {
+    r.check_keys(n, path, {"sequence", "onsets_s", "gains_db", "truth", "factors"});
+    s.kind = StimulusKind::sequence;
+    s.sequence = parse_sequence(r, n, path, s.name);
   } else {
     r.check_keys(n, path, {"file", "truth", "factors"});
     s.kind = StimulusKind::file;

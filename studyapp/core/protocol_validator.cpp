@@ -128,8 +128,37 @@ struct Checker {
     }
   }
 
+  // The stimuli a stimulus is made from: a derived one's source, a sequence's parts.
+  std::vector<const StimulusSource*> sources_of(const StimulusSource& s) const {
+    std::vector<const StimulusSource*> out;
+    if (s.kind == StimulusKind::derived) out.push_back(p.find_stimulus(s.derive_from.name));
+    for (const SequencePart& part : s.sequence) out.push_back(p.find_stimulus(part.stimulus.name));
+    std::erase(out, nullptr);
+    return out;
+  }
+
+  // A sequence's parts must exist and none may lead back to the sequence (through derived stimuli or
+  // other sequences); each part is itself checked where it is defined (its file, its confinement).
+  void sequence(const StimulusSource& s) {
+    for (const SequencePart& part : s.sequence) ref(part.stimulus, "stimulus '" + s.name + "': sequence: ");
+    std::set<std::string> seen;
+    std::vector<std::pair<const StimulusSource*, std::string>> todo;  // stimulus, the part it came through
+    for (const StimulusSource* part : sources_of(s)) todo.emplace_back(part, part->name);
+    while (!todo.empty()) {
+      const auto [cur, through] = todo.back();
+      todo.pop_back();
+      if (cur == &s) {
+        problems.push_back(at(s.where, "stimulus '" + s.name + "': the sequence contains itself through '" + through + "'"));
+        return;
+      }
+      if (!seen.insert(cur->name).second) continue;
+      for (const StimulusSource* next : sources_of(*cur)) todo.emplace_back(next, through);
+    }
+  }
+
   void stimulus(const StimulusSource& s) {
     if (s.kind == StimulusKind::derived) return derived(s);
+    if (s.kind == StimulusKind::sequence) return sequence(s);
     if (const std::string outside = confinement.problem(s.path, p.base_dir); !outside.empty()) {
       problems.push_back(at(s.path_where, "stimulus '" + s.name + "': " + outside));
       return;

@@ -7,6 +7,7 @@
 
 #include "studyapp/core/anchor_lowpass.hpp"
 #include "studyapp/core/protocol_validator.hpp"
+#include "studyapp/core/stimulus_sequence.hpp"
 #include "synthesis/audio_file.hpp"
 #include "synthesis/bounded_file.hpp"
 #include "synthesis/input_error.hpp"
@@ -41,8 +42,8 @@ StimulusCache::StimulusCache(const Protocol& protocol, std::string cache_dir)
       cache_dir_(std::move(cache_dir)),
       sample_rate_hz_(protocol.sample_rate_hz),
       confinement_(protocol_confinement(protocol)) {
-  // Derived stimuli hash their parent's hash, so parents come first (the validator rejects cycles;
-  // the depth bound keeps a cycle that slipped through from looping).
+  // Derived stimuli and sequences hash their sources' hashes, so sources come first (the validator
+  // rejects cycles; the bound on passes keeps a cycle that slipped through from looping).
   std::set<std::string> pending;
   for (const auto& s : protocol_.stimuli) pending.insert(s.name);
   for (int pass = 0; !pending.empty() && pass <= int(protocol_.stimuli.size()); ++pass)
@@ -63,6 +64,17 @@ StimulusCache::StimulusCache(const Protocol& protocol, std::string cache_dir)
           hashes_[s.name] = sha256_hex("lowpass_hz=" + number_text(s.lowpass_hz) + " of " + parent->second);
           break;
         }
+        case StimulusKind::sequence: {
+          std::vector<SequenceRecipePart> parts;
+          for (const SequencePart& part : s.sequence) {
+            const auto h = hashes_.find(part.stimulus.name);
+            if (h == hashes_.end()) break;
+            parts.push_back({h->second, part.onset_s, part.gain_db});
+          }
+          if (parts.size() < s.sequence.size()) continue;  // next pass
+          hashes_[s.name] = sequence_hash(parts, sample_rate_hz_);
+          break;
+        }
         case StimulusKind::file:
           try {
             hashes_[s.name] = sha256_file_hex(confined_stimulus_path(protocol_, s, confinement_));
@@ -75,7 +87,8 @@ StimulusCache::StimulusCache(const Protocol& protocol, std::string cache_dir)
       pending.erase(s.name);
     }
   if (!pending.empty())
-    throw InputError(source(*pending.begin()).where, "derived stimulus '" + *pending.begin() + "' has no source");
+    throw InputError(source(*pending.begin()).where, "stimulus '" + *pending.begin() + "' is made from a stimulus "
+                                                     "that does not exist or is made from it");
 }
 
 const StimulusSource& StimulusCache::source(const std::string& name) const {
@@ -140,6 +153,16 @@ Samples StimulusCache::make(const std::string& name) {
       });
     case StimulusKind::file:
       return lookup_or_render(h, [&] { return read_recording_stimulus(protocol_, s, confinement_); });
+    case StimulusKind::sequence:
+      return lookup_or_render(h, [&] {
+        std::vector<Samples> parts;  // held while mixing
+        std::vector<SequenceStrike> strikes;
+        for (const SequencePart& part : s.sequence) {
+          parts.push_back(make(part.stimulus.name));
+          strikes.push_back({parts.back().get(), part.onset_s, part.gain_db});
+        }
+        return mix_sequence(strikes, sample_rate_hz_, s.where, s.name);
+      });
   }
   return nullptr;
 }

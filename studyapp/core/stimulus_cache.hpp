@@ -1,7 +1,8 @@
 // The stimuli of a protocol as sample buffers: parameter sets rendered by the embedded synthesizer,
-// derived low-pass anchors, recordings. Each is identified by a hash of what produced it (the recipe
-// hash for parameter sets) and cached in memory and on disk (CACHE_DIR/<hash>.wav), so a stimulus is
-// rendered once per recipe, whatever protocol or session asks for it.
+// derived low-pass anchors, recordings, sequences of other stimuli. Each is identified by a hash of
+// what produced it (the recipe hash for parameter sets) and cached in memory and on disk
+// (CACHE_DIR/<hash>.wav), so a stimulus is rendered once per recipe, whatever protocol or session asks
+// for it.
 #pragma once
 #include <functional>
 #include <map>
