@@ -1,7 +1,11 @@
 // ab_summary: counts per design, then the tests and d' of signal_detection.hpp and binomial_test.hpp.
 #include "analysis/stats/ab_summary.hpp"
 
+#include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
 
 #include "analysis/stats/row_groups.hpp"
 #include "analysis/stats/signal_detection.hpp"
@@ -53,7 +57,20 @@ void summarise_preference(const AbTrials& t, const AbSummaryOptions& o, AbSummar
       p.test = binomial_test(p.first, p.first + p.second, 0.5, Alternative::two_sided, o.conf_level);
     s.preference = p;
   }
-  if (t.score.size() >= 2) s.score = paired_t_test(t.score, std::vector<double>(t.score.size(), 0.0), o.conf_level);
+  if (t.score.empty()) return;
+  AbScore sc;
+  sc.n = t.score.size();
+  for (double v : t.score) sc.mean += v / double(sc.n);
+  double squares = 0;
+  for (double v : t.score) squares += (v - sc.mean) * (v - sc.mean);
+  sc.sd = sc.n > 1 ? std::sqrt(squares / double(sc.n - 1)) : std::numeric_limits<double>::quiet_NaN();
+  if (sc.n >= 2) {
+    try {
+      sc.test = paired_t_test(t.score, std::vector<double>(sc.n, 0.0), o.conf_level);
+    } catch (const std::domain_error&) {  // all equal: no t statistic, the mean and sd still stand
+    }
+  }
+  s.score = sc;
 }
 
 bool parse_correct(const TidyCsv& table, std::size_t r, std::size_t c) {
@@ -66,6 +83,13 @@ bool parse_correct(const TidyCsv& table, std::size_t r, std::size_t c) {
 }
 
 }  // namespace
+
+int favoured_side(const AbScore& score) {
+  if (!score.test) return score.n >= 2 && score.sd == 0 ? (score.mean > 0) - (score.mean < 0) : 0;  // all equal
+  if (score.test->ci_low > 0) return 1;
+  if (score.test->ci_high < 0) return -1;
+  return 0;
+}
 
 AbSummary ab_summary(const AbTrials& trials, AbTask task, const AbSummaryOptions& options) {
   AbSummary s;
@@ -89,6 +113,8 @@ std::vector<AbTrials> ab_trials_from_table(const TidyCsv& table, AbTask task, co
   const std::size_t c_resp = detection ? table.column(columns.response) : 0;
   const std::size_t c_choice = choice ? table.column(columns.choice) : 0;
   const std::size_t c_score = score ? table.column(columns.score) : 0;
+  const bool per_subject = score && !columns.subject.empty();
+  const std::size_t c_subject = per_subject ? table.column(columns.subject) : 0;
   std::vector<AbTrials> out;
   for (const auto& [name, rows] : group_rows(table, columns.by)) {
     AbTrials t;
@@ -102,6 +128,24 @@ std::vector<AbTrials> ab_trials_from_table(const TidyCsv& table, AbTask task, co
       }
       if (choice) t.choice.push_back(table.cell(r, c_choice));
       if (score) t.score.push_back(table.number(r, c_score));
+    }
+    if (per_subject) {  // each subject's mean, subjects in order of first appearance
+      std::vector<std::string> subjects;
+      std::vector<double> sums, counts;
+      for (std::size_t i = 0; i < rows.size(); ++i) {
+        const std::string& who = table.cell(rows[i], c_subject);
+        const auto at = std::size_t(std::find(subjects.begin(), subjects.end(), who) - subjects.begin());
+        if (at == subjects.size()) {
+          subjects.push_back(who);
+          sums.push_back(0);
+          counts.push_back(0);
+        }
+        sums[at] += t.score[i];
+        counts[at] += 1;
+      }
+      t.averaged = subjects.size() < rows.size();
+      t.score.clear();
+      for (std::size_t k = 0; k < subjects.size(); ++k) t.score.push_back(sums[k] / counts[k]);
     }
     if (detection) {
       std::size_t signal = 0;

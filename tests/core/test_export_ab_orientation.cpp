@@ -5,6 +5,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <map>
+#include <string>
+#include <vector>
+
 #include "synthesis/tidy_csv.hpp"
 #include "studyapp/core/autopilot.hpp"
 #include "core_fixtures.hpp"
@@ -40,4 +44,42 @@ TEST(ExportAbOrientation, BipolarScoresAreTurnedToTheWrittenPair) {
   ASSERT_EQ(j["groups"].size(), 1u);
   EXPECT_EQ(j["groups"][0]["n"], 30);
   EXPECT_TRUE(j["groups"][0].contains("score"));
+}
+
+// Skandalou & Ireland's Fig. 5.2 and Table 5.3 from the shipped protocol's export, one call each: the
+// stimuli's factors name object, material and location (the pair shares them; the method differs, so
+// its cell is empty), and each group's mean is the mean of its oriented answers.
+TEST(ExportAbOrientation, Figure52AndTable53AreOneCallEach) {
+  test::TempDir dir;
+  const AutopilotOptions o = ms::testing::shipped_study("ab_synthesis_methods.yaml", dir);
+  ASSERT_TRUE(ms::testing::run_participants_and_export(o, 3, "L", 40, dir.file("out")));
+  const TidyCsv t = TidyCsv::read(dir.file("out/ab.csv"));
+  std::map<std::string, std::vector<double>> by_location;
+  for (std::size_t r = 0; r < t.rows(); ++r) {
+    const auto at = [&](const char* c) { return t.cell(r, t.column(c)); };
+    EXPECT_EQ(at("pair_first"), "sin-" + at("object") + "-" + at("location")) << r;
+    EXPECT_EQ(at("method"), "") << r;  // sinusoidal against filter-based: no shared level
+    by_location[at("object") + "/" + at("location")].push_back(t.number(r, t.column("response_oriented")));
+  }
+  ASSERT_EQ(by_location.size(), 10u);
+  const std::string csv = dir.file("out/ab.csv");
+  const auto fig = test::run_cli("stats ab " + csv + " --task preference --score response_oriented --by object,location "
+                                 "--where block=methods --options sinusoidal,filter-based --json", dir);
+  ASSERT_EQ(fig.exit_code, 0) << fig.err;
+  const auto j = nlohmann::json::parse(fig.out);
+  ASSERT_EQ(j["groups"].size(), 10u);
+  for (const auto& g : j["groups"]) {
+    const auto& v = by_location.at(g["group"].get<std::string>());
+    double mean = 0;
+    for (double x : v) mean += x / double(v.size());
+    EXPECT_EQ(g["score"]["n"], 3);
+    EXPECT_NEAR(g["score"]["mean"].get<double>(), mean, 1e-12) << g["group"];
+    EXPECT_TRUE(g["score"].contains("sd"));
+  }
+  const auto table = test::run_cli("stats ab " + csv + " --task preference --score response_oriented --by material "
+                                   "--subject participant --where block=methods --options sinusoidal,filter-based", dir);
+  ASSERT_EQ(table.exit_code, 0) << table.err;
+  for (const char* material : {"plastic", "wood", "ceramic", "glass", "metal"})
+    EXPECT_NE(table.out.find(std::string("\n") + material + " "), std::string::npos) << material << "\n" << table.out;
+  EXPECT_NE(table.out.find("+ favours filter-based, - favours sinusoidal; 5 group(s)"), std::string::npos) << table.out;
 }
