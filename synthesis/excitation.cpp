@@ -25,6 +25,7 @@ double Excitation::force(double t) const {
   if (t < 0.0 || t > contact_s) return 0.0;
   const double x = t / contact_s;
   if (shape == PulseShape::raised_cosine) return (1.0 - std::cos(2.0 * std::numbers::pi * x)) / contact_s;
+  if (shape == PulseShape::half_sine) return 0.5 * std::numbers::pi * std::sin(std::numbers::pi * x) / contact_s;
   return std::pow(std::sin(std::numbers::pi * x), 1.5) / (kHertzArea * contact_s);
 }
 

@@ -10,9 +10,11 @@
 
 namespace ms {
 
-enum class PulseShape { impulse, raised_cosine, hertz };
-inline constexpr NameTable<PulseShape, 3> kPulseShapeNames{
-    {{PulseShape::impulse, "impulse"}, {PulseShape::raised_cosine, "raised_cosine"}, {PulseShape::hertz, "hertz"}}};
+enum class PulseShape { impulse, raised_cosine, hertz, half_sine };
+inline constexpr NameTable<PulseShape, 4> kPulseShapeNames{{{PulseShape::impulse, "impulse"},
+                                                            {PulseShape::raised_cosine, "raised_cosine"},
+                                                            {PulseShape::hertz, "hertz"},
+                                                            {PulseShape::half_sine, "half_sine"}}};
 
 struct Excitation {
   PulseShape shape = PulseShape::impulse;
@@ -20,7 +22,8 @@ struct Excitation {
   double gain = 1.0;       // strike gain (force scale)
 
   // Force at time t [1/s], area 1 over [0, contact_s]: raised cosine (1 - cos(2 pi t/tau))/tau,
-  // Hertz-like sin(pi t/tau)^1.5 / (0.5564... tau) (the half-sine power of Hertzian contact).
+  // Hertz-like sin(pi t/tau)^1.5 / (0.5564... tau) (the half-sine power of Hertzian contact),
+  // half-sine (pi/2) sin(pi t/tau)/tau (a linear spring: a stick on a stiff object).
   double force(double t) const;
 };
 

@@ -80,7 +80,7 @@ TEST(Renderer, LongHighQModesStayAccurate) {
 }
 
 TEST(Renderer, FiniteContactMatchesClosedForm) {
-  for (PulseShape shape : {PulseShape::raised_cosine, PulseShape::hertz}) {
+  for (PulseShape shape : {PulseShape::raised_cosine, PulseShape::hertz, PulseShape::half_sine}) {
     for (double tau : {0.0002, 0.001, 0.004}) {
       const ModalModel m = random_model(7, 120, 40.0);
       Excitation e;
@@ -111,8 +111,22 @@ TEST(Excitation, RaisedCosineLowPassMatchesFourierTransform) {
   EXPECT_GT(std::abs(contact_factor(e, 0.0, 200.0)), std::abs(contact_factor(e, 0.0, 800.0)));
 }
 
+TEST(Excitation, HalfSineMatchesItsFourierTransform) {
+  // (pi/2) sin(pi t/tau)/tau: G(p) = (pi/2tau) a (1 + e^{-p tau}) / (p^2 + a^2), a = pi/tau (damped too).
+  Excitation e;
+  e.shape = PulseShape::half_sine;
+  e.contact_s = 0.0008;
+  const double a = std::numbers::pi / e.contact_s;
+  for (double d : {0.0, 30.0})
+    for (double f : {50.0, 300.0, 1234.0, 1875.0, 4321.0, 9000.0}) {
+      const std::complex<double> p(-d, 2 * std::numbers::pi * f);
+      const std::complex<double> expected = 0.5 * a * a * (1.0 + std::exp(-p * e.contact_s)) / (p * p + a * a);
+      EXPECT_NEAR(std::abs(contact_factor(e, d, f) - expected), 0.0, 1e-9) << f;
+    }
+}
+
 TEST(Excitation, PulsesHaveUnitArea) {
-  for (PulseShape shape : {PulseShape::raised_cosine, PulseShape::hertz}) {
+  for (PulseShape shape : {PulseShape::raised_cosine, PulseShape::hertz, PulseShape::half_sine}) {
     Excitation e;
     e.shape = shape;
     e.contact_s = 0.002;
