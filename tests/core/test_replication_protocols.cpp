@@ -21,7 +21,8 @@
 namespace {
 
 const std::vector<std::string> kReplications = {"vandendoel2002", "sterling2019", "sterling2019_handtuning",
-                                                "ren2013_materials", "ab_synthesis_methods"};
+                                                "ren2013_materials", "ab_synthesis_methods",
+                                                "skandalou2017_variation"};
 
 std::string protocol_path(const std::string& name) {
   return std::string(MODALSTUDY_SOURCE_DIR) + "/protocols/" + name + ".yaml";

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <sstream>
 #include <string>
@@ -67,7 +68,7 @@ double attack_rms_dbfs(const std::vector<float>& x, double rate) {
 
 TEST(ReplicationRecordings, EachCopyHashesAsItsReadmeStates) {
   const std::vector<Copy> copies = stated_copies();
-  ASSERT_EQ(copies.size(), 10u);
+  ASSERT_EQ(copies.size(), 11u);
   for (const Copy& c : copies) {
     ASSERT_TRUE(std::filesystem::exists(kDir + c.file)) << c.file;
     EXPECT_EQ(ms::sha256_file_hex(kDir + c.file), c.copy_sha) << c.file;
@@ -96,25 +97,36 @@ TEST(ReplicationRecordings, EachCopyIsTheKitsSampleTimesTheStatedGain) {
   }
 }
 
-// The protocols play only recordings that are copied here (or rendered by protocols/audio's scripts).
+// The protocols play only recordings that are copied here (or, in the Skandalou protocol, the stand-ins
+// rendered by protocols/audio/render_recordings.sh).
 TEST(ReplicationRecordings, TheProtocolsPlayTheseCopies) {
+  std::ifstream script(std::string(MODALSTUDY_SOURCE_DIR) + "/protocols/audio/render_recordings.sh");
+  const std::string rendered((std::istreambuf_iterator<char>(script)), std::istreambuf_iterator<char>());
   std::map<std::string, int> played;
-  for (const char* name : {"sterling2019", "sterling2019_handtuning", "ren2013_materials"}) {
+  for (const char* name : {"sterling2019", "sterling2019_handtuning", "ren2013_materials", "skandalou2017_variation"}) {
     std::vector<std::string> problems;
     const ms::Protocol p =
         ms::load_protocol(std::string(MODALSTUDY_SOURCE_DIR) + "/protocols/" + name + ".yaml", &problems);
     ASSERT_TRUE(problems.empty()) << name << ": " << problems.front();
-    for (const ms::StimulusSource& s : p.stimuli)
-      if (s.kind == ms::StimulusKind::file) {
-        ASSERT_EQ(s.path.rfind("audio/hydrogen-drumkits/", 0), 0u) << name << ": " << s.path;
+    for (const ms::StimulusSource& s : p.stimuli) {
+      if (s.kind != ms::StimulusKind::file) continue;
+      if (s.path.rfind("audio/hydrogen-drumkits/", 0) == 0) {
         ++played[s.path.substr(std::string("audio/hydrogen-drumkits/").size())];
+        continue;
       }
+      // A stand-in: audio/<object>-<area>.wav, rendered from the script's <object>:<area> spec.
+      ASSERT_EQ(std::string(name), "skandalou2017_variation") << s.path;
+      const std::string stem = s.path.substr(6, s.path.size() - 10);
+      const std::size_t dash = stem.rfind('-');
+      EXPECT_NE(rendered.find(stem.substr(0, dash) + ":" + stem.substr(dash + 1) + ":"), std::string::npos) << s.path;
+    }
   }
   std::vector<std::string> copied;
   for (const Copy& c : stated_copies()) copied.push_back(c.file);
   for (const auto& [file, n] : played)
     EXPECT_NE(std::find(copied.begin(), copied.end(), file), copied.end()) << file << " is played but not copied";
   EXPECT_EQ(played.count("PaisteBell-Med.wav"), 1u);
+  EXPECT_EQ(played.count("PaisteRide-Med.wav"), 1u);
   EXPECT_EQ(played.count("Clave-Med.wav"), 1u);
 }
 

@@ -106,4 +106,5 @@ TEST_P(Layout, EveryBlockFitsSmallAndScaledScreens) {
 
 INSTANTIATE_TEST_SUITE_P(Shipped, Layout,
                          ::testing::Values("demo", "ab_synthesis_methods", "ren2013_materials", "sterling2019",
-                                           "sterling2019_handtuning", "vandendoel2002", "skandalou2017_changepoint", "mushra11"));
+                                           "sterling2019_handtuning", "vandendoel2002", "skandalou2017_changepoint",
+                                           "skandalou2017_variation", "mushra11"));

@@ -133,7 +133,7 @@ TEST(SessionDrive, ClosingMidSessionResumesAtTheFirstUnansweredTrial) {
 
 // The shipped replications with few trials, whole sessions through the same views: the A/B comparison
 // with a reference per pair (bipolar -3..+3), the five-material identification and the Q sweeps of
-// change points (10 trials of 19 sounds).
+// change points (10 trials of 19 sounds), and the bounce sequences of sound variation (16 pairs).
 class ShippedProtocol : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(ShippedProtocol, WholeSessionThroughTheViews) {
@@ -152,4 +152,4 @@ TEST_P(ShippedProtocol, WholeSessionThroughTheViews) {
 
 INSTANTIATE_TEST_SUITE_P(Replications, ShippedProtocol,
                          ::testing::Values("ab_synthesis_methods", "ren2013_materials", "skandalou2017_changepoint",
-                                           "sterling2019_handtuning"));
+                                           "skandalou2017_variation", "sterling2019_handtuning"));

@@ -23,13 +23,15 @@ WINDOW_S = 0.005
 
 # (kit, file): what it is. Only genuine strikes: the kits' Clave, WoodBlock and Cowbell "velocity
 # layers" are one recording scaled (they agree to -58 dB or better after a gain), so one file each;
-# PaisteBell and the two Waterglass instruments are five different strikes each.
+# PaisteBell and the two Waterglass instruments are five different strikes each. PaisteRide: the kit's
+# "Paiste Ride" struck on its bow, beside "Paiste Bell" on its bell (Skandalou 2017 Exp. 2's two areas).
 FILES = [
     ("The Black Pearl 1.0", "PaisteBell-Softest.wav"),
     ("The Black Pearl 1.0", "PaisteBell-Soft.wav"),
     ("The Black Pearl 1.0", "PaisteBell-Med.wav"),
     ("The Black Pearl 1.0", "PaisteBell-Hard.wav"),
     ("The Black Pearl 1.0", "PaisteBell-Hardest.wav"),
+    ("The Black Pearl 1.0", "PaisteRide-Med.wav"),
     ("The Black Pearl 1.0", "Cowbell-Med.wav"),
     ("Gimme A Hand 1.0", "Clave-Med.wav"),
     ("Gimme A Hand 1.0", "WoodBlock-Med.wav"),
