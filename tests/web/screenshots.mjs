@@ -1,6 +1,7 @@
 // Pictures of the browser client for the README: the demo study in Debian's chromium at 1024x600
 // (docs/images/web-*.png) and at a device scale of 1.5 (build/web-shots-150/), one per block type, a
-// whole 19-sound sweep of the change-point replication, and the experimenter page. Not a test; run by hand after a build:
+// whole 19-sound sweep of the change-point replication, a sound-variation trial and the experimenter
+// page. Not a test; run by hand after a build:
 //   MODALSTUDY_BIN=build/bin/modalstudy node tests/web/screenshots.mjs [OUTDIR]
 import { mkdirSync } from 'node:fs';
 import { join } from 'node:path';
@@ -49,12 +50,30 @@ for (const [scale, dir] of [[1, out], [1.5, join(source, 'build', 'web-shots-150
     await sweeper.next();
   }
   await sweepServe.stop();
+  // A sound-variation trial (Skandalou & Ireland 2017, Exp. 2): two bounce sequences, both heard, +1 chosen.
+  const variationServe = await startServe(workDir(), join(source, 'protocols', 'skandalou2017_variation.yaml'), 1, 'variation');
+  const variationPage = await context.newPage();
+  const listener = new Participant(variationPage);
+  await variationPage.goto(variationServe.links[0]);
+  for (let screens = 0; screens < 4; ++screens) {
+    const s = await listener.nextScreen();
+    if (s.kind === 'trial' && s.type === 'ab') {
+      await listener.hearAll();
+      await variationPage.locator('#view button.choice[data-value="1"]').click();
+      await variationPage.evaluate(() => window.scrollTo(0, 0));
+      await variationPage.screenshot({ path: join(dir, 'web-ab-variation.png') });
+      break;
+    }
+    await listener.answer(s);
+    await listener.next();
+  }
+  await variationServe.stop();
   const x = await context.newPage();
   await x.goto(serve.experimenter);
   await x.waitForSelector('#participants tr[data-participant="web-001"]');
   await x.screenshot({ path: join(dir, 'web-experimenter.png') });
   await context.close();
   await serve.stop();
-  console.log(`${dir}: ${[...shot].map((t) => `web-${t}.png`).join(' ')} web-changepoint-sweep.png web-experimenter.png`);
+  console.log(`${dir}: ${[...shot].map((t) => `web-${t}.png`).join(' ')} web-changepoint-sweep.png web-ab-variation.png web-experimenter.png`);
 }
 await browser.close();
