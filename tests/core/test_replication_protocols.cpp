@@ -71,6 +71,13 @@ TEST(ReplicationProtocols, EachValidatesWithNoProblem) {
 // reference.
 TEST(ReplicationProtocols, VanDenDoel2002KeepsThePapersDesign) {
   const ms::Protocol p = load("vandendoel2002");
+  // The paper's 22.05 kHz (section 3): the protocol and every parameter set it renders (the check
+  // refuses a set at another rate than the protocol's).
+  EXPECT_EQ(p.sample_rate_hz, 22050.0);
+  for (const ms::StimulusSource& s : p.stimuli)
+    if (s.kind == ms::StimulusKind::paramset)
+      EXPECT_EQ(ms::load_paramset(std::string(MODALSTUDY_SOURCE_DIR) + "/protocols/" + s.path).sample_rate_hz, 22050.0)
+          << s.name;
   for (const std::string object : {"vase", "bowl"}) {
     const ms::Block& b = block(p, "av-" + object);
     const auto& s = std::get<ms::LimitsBlock>(b.body);
