@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "analysis/audit/contact_spectrum.hpp"
 #include "synthesis/effects.hpp"
 #include "synthesis/excitation.hpp"
 #include "synthesis/resonator_bank.hpp"
@@ -25,7 +26,7 @@ double strike_decay(const AuditModel& model, std::size_t s, std::size_t n) {
 double strike_factor(const AuditModel& model, std::size_t s, std::size_t n) {
   const AuditMode& m = model.modes[n];
   const double tau = model.contact_s.empty() ? 0.0 : model.contact_s[s];
-  double f = contact_gain(tau, strike_decay(model, s, n), m.freq_hz);
+  double f = contact_gain(model.contact_shape, tau, strike_decay(model, s, n), m.freq_hz);
   if (model.hit.active()) f *= std::exp(model.hit.log_factor(s, n));
   return f;
 }
@@ -38,27 +39,12 @@ double strike_amp(const AuditModel& model, std::size_t s, std::size_t n) {
   return model.gain[s] * amp_before_gain(model, s, n);
 }
 
-double contact_gain(double contact_s, double decay_per_s, double freq_hz) {
-  if (contact_s <= 0.0) return 1.0;
-  // Closed form of contact_factor for the raised cosine (the fits call this ~10^6 times):
-  // G = (1 - e^{-p tau}) w0^2 / (tau p (p^2 + w0^2)), p = -d + i omega, w0 = 2 pi / tau.
-  const std::complex<double> p(-decay_per_s, 2.0 * std::numbers::pi * freq_hz);
-  const double w0 = 2.0 * std::numbers::pi / contact_s;
-  const std::complex<double> den = contact_s * p * (p * p + w0 * w0);
-  if (std::abs(den) < 1e-12 * w0 * w0 * w0 * contact_s) {  // p = +-i w0: the removable singularity
-    Excitation e;
-    e.shape = PulseShape::raised_cosine;
-    e.contact_s = contact_s;
-    return std::abs(contact_factor(e, decay_per_s, freq_hz));
-  }
-  return std::abs((1.0 - std::exp(-p * contact_s)) * w0 * w0 / den);
-}
 
 ModalModel strike_model(const AuditModel& model, std::size_t s) {
   ModalModel out;
   const double tau = model.contact_s.empty() ? 0.0 : model.contact_s[s];
   Excitation e;
-  e.shape = PulseShape::raised_cosine;
+  e.shape = model.contact_shape;
   e.contact_s = tau;
   for (std::size_t n = 0; n < model.modes.size(); ++n) {
     const AuditMode& m = model.modes[n];
@@ -84,7 +70,7 @@ ModalModel strike_model(const AuditModel& model, std::size_t s) {
 }
 
 void add_decaying_noise_power(BarkSpectrogram& spec, const SpectrogramGrid& g, double direct_energy, double t60_s,
-                              double energy_db) {
+                              double energy_db, const std::vector<double>* bins_per_band) {
   if (t60_s <= 0.0) return;
   // The noise's energy is relative to the direct sound over the whole strike, as synthesis adds it.
   const double var0 = decaying_noise_variance(direct_energy, g.sample_rate_hz, g.samples, t60_s, energy_db);
@@ -98,7 +84,18 @@ void add_decaying_noise_power(BarkSpectrogram& spec, const SpectrogramGrid& g, d
   const double per_hop = std::pow(r, double(g.hop));
   double level = var0 * frame0;
   for (std::size_t f = 0; f < spec.frames && level > 0.0; ++f, level *= per_hop)
-    for (std::size_t b = 0; b < spec.bands; ++b) spec.at(f, b) += level * double(g.band_bins[b]);
+    for (std::size_t b = 0; b < spec.bands; ++b)
+      spec.at(f, b) += level * (bins_per_band ? (*bins_per_band)[b] : double(g.band_bins[b]));
+}
+
+std::vector<double> burst_bins_per_band(const SpectrogramGrid& g, double low_hz, double high_hz) {
+  std::vector<double> bins(g.bands, 0.0);
+  const double share = band_power_share(low_hz, high_hz, g.sample_rate_hz);
+  for (std::size_t k = 1; k < g.bin_band.size(); ++k) {
+    const double f = double(k) * g.sample_rate_hz / double(g.window);
+    if (g.bin_band[k] >= 0 && f >= low_hz && f <= high_hz) bins[std::size_t(g.bin_band[k])] += 1.0 / share;
+  }
+  return bins;
 }
 
 void add_band_noise_power(BarkSpectrogram& spec, const SpectrogramGrid& g, const std::vector<double>& variance) {
@@ -122,9 +119,14 @@ Spectra predict_spectra(const AuditModel& model, const AuditData& data, std::siz
   for (std::size_t r = 0; r < kResolutions; ++r) {
     if (model.reverb.enabled)
       add_decaying_noise_power(spec[r], ms_.grids[r], energy, model.reverb.rt60_s, model.reverb.level_db);
-    if (model.transient.enabled)
+    if (model.transient.enabled && model.transient.band_limited()) {
+      const std::vector<double> bins = burst_bins_per_band(ms_.grids[r], model.transient.low_hz, model.transient.high_hz);
+      add_decaying_noise_power(spec[r], ms_.grids[r], energy, 1e-3 * model.transient.duration_ms,
+                               model.transient.level_db, &bins);
+    } else if (model.transient.enabled) {
       add_decaying_noise_power(spec[r], ms_.grids[r], energy, 1e-3 * model.transient.duration_ms,
                                model.transient.level_db);
+    }
     add_band_noise_power(spec[r], ms_.grids[r], model.noise_band_variance);
   }
   return spec;

@@ -13,6 +13,7 @@
 #include "analysis/audit/strikes.hpp"
 #include "synthesis/damping_law.hpp"
 #include "synthesis/effects.hpp"
+#include "synthesis/excitation.hpp"
 #include "synthesis/modal_model.hpp"
 
 namespace ms::audit {
@@ -39,6 +40,7 @@ struct AuditModel {
   double contact_ref_s = 0.0;            // ... tau_s = contact_ref_s (gain_s / contact_gain_ref)^-contact_exponent
   double contact_gain_ref = 1.0;
   double contact_exponent = 0.0;
+  PulseShape contact_shape = PulseShape::raised_cosine;  // ... the force's shape (contact_spectrum.hpp)
   std::vector<double> noise_band_variance;  // noise_floor: white-equivalent variance per Bark band (empty: none)
   Reverb reverb;                         // reverberation: a white tail, energy relative to each strike's direct sound
   AttackTransient transient;             // residual_transient: a white burst, likewise
@@ -83,9 +85,14 @@ Spectra predict_spectra(const AuditModel& model, const AuditData& data, std::siz
 void add_band_noise_power(BarkSpectrogram& spec, const SpectrogramGrid& grid, const std::vector<double>& variance);
 
 // Adds the expected band power of synthesis/effects' decaying noise (t60_s, energy_db relative to a
-// direct sound of energy direct_energy) to a spectrogram on `grid` (noise starting at sample 0).
+// direct sound of energy direct_energy) to a spectrogram on `grid` (noise starting at sample 0). White
+// noise fills each band's bins; a band-limited burst only bins_per_band[b] of them, at a density raised
+// by its band's share (burst_bins_per_band).
 void add_decaying_noise_power(BarkSpectrogram& spec, const SpectrogramGrid& grid, double direct_energy,
-                              double t60_s, double energy_db);
+                              double t60_s, double energy_db, const std::vector<double>* bins_per_band = nullptr);
+
+// Per Bark band of `grid`: its bins inside [low_hz, high_hz], each weighted 1 / band_power_share.
+std::vector<double> burst_bins_per_band(const SpectrogramGrid& grid, double low_hz, double high_hz);
 
 // Gap of strike s between the model and the measurement.
 GapMap strike_gap(const AuditModel& model, const AuditData& data, std::size_t strike);
@@ -100,7 +107,5 @@ double strike_variation(const MeasuredStrikes& measured);
 // model's amplitudes, contact factor included): the one latent every model has.
 void fit_gain(AuditModel& model, const AuditData& data, std::size_t strike);
 
-// |contact factor| of a raised-cosine contact of duration tau on a mode (1 for tau = 0).
-double contact_gain(double contact_s, double decay_per_s, double freq_hz);
 
 }  // namespace ms::audit

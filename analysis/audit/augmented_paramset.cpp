@@ -66,7 +66,7 @@ ParamSetRecipe augmented_recipe(const AuditData& data, const AuditModel& model, 
   }
   if (support) recipe.support_damping = SupportDamping{.per_mode_decay_per_s = extra};
   if (const double tau = model.contact_s.empty() ? 0.0 : model.contact_s[s]; tau > 0.0)
-    recipe.excitation = {.shape = PulseShape::raised_cosine, .contact_s = tau};
+    recipe.excitation = {.shape = model.contact_shape, .contact_s = tau};
   // Three seeds: noises drawn from one seed would be the same sequence, correlated, and add 3 dB too much.
   recipe.reverb = model.reverb;
   recipe.reverb.seed = 2;

@@ -128,7 +128,7 @@ void fit_amplitudes(AuditModel& model, const AuditData& data, const std::vector<
 
 void fit_phases(AuditModel& model, const AuditData& data, const std::vector<std::size_t>& strikes) {
   Excitation contact;
-  contact.shape = PulseShape::raised_cosine;
+  contact.shape = model.contact_shape;
   for (std::size_t n = 0; n < model.modes.size(); ++n) {
     AuditMode& m = model.modes[n];
     if (m.track < 0) continue;

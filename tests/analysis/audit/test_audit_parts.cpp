@@ -9,6 +9,7 @@
 #include "analysis/audit/audit.hpp"
 #include "analysis/audit/augmented_paramset.hpp"
 #include "analysis/audit/baseline_fit.hpp"
+#include "analysis/audit/contact_spectrum.hpp"
 #include "analysis/audit/gap_metric.hpp"
 #include "analysis/audit/hidden_effect_generator.hpp"
 #include "analysis/audit/mode_matching.hpp"
@@ -204,16 +205,31 @@ TEST(AuditTransient, StrongBurstIsNamedFittedAndExplained) {
   EXPECT_GE(r.final_model.modes.size(), 12u);  // the object's own modes stay
 }
 
-TEST(AuditContact, ClosedFormEqualsTheSynthesisersIntegral) {
-  Excitation e;
-  e.shape = PulseShape::raised_cosine;
-  for (double tau : {0.1e-3, 0.5e-3, 2e-3})
-    for (double f : {100.0, 900.0, 4000.0, 12000.0})
-      for (double d : {0.5, 30.0}) {
-        e.contact_s = tau;
-        EXPECT_NEAR(contact_gain(tau, d, f), std::abs(contact_factor(e, d, f)), 1e-9) << tau << " " << f;
-      }
-  EXPECT_EQ(contact_gain(0.0, 3.0, 1000.0), 1.0);
+TEST(AuditContact, ClosedFormsAndTheHertzTableEqualTheSynthesisersIntegral) {
+  // Raised cosine and half-sine in closed form (to 1e-9); Hertz's pulse from the table (bilinear in
+  // omega tau and decay tau: to 2e-3 of |G| at 1, well below the extraction's amplitude error).
+  for (PulseShape shape : {PulseShape::raised_cosine, PulseShape::half_sine, PulseShape::hertz}) {
+    Excitation e;
+    e.shape = shape;
+    for (double tau : {0.1e-3, 0.5e-3, 2e-3})
+      for (double f : {100.0, 900.0, 1234.5, 4000.0, 12000.0})
+        for (double d : {0.5, 30.0}) {
+          e.contact_s = tau;
+          EXPECT_NEAR(contact_gain(shape, tau, d, f), std::abs(contact_factor(e, d, f)),
+                      shape == PulseShape::hertz ? 2e-3 : 1e-9)
+              << to_string(shape) << " " << tau << " " << f;
+        }
+    EXPECT_EQ(contact_gain(shape, 0.0, 3.0, 1000.0), 1.0);
+  }
+  // The main lobe's edge: |G| has its first zero there (undamped).
+  for (PulseShape shape : {PulseShape::raised_cosine, PulseShape::half_sine, PulseShape::hertz}) {
+    Excitation e;
+    e.shape = shape;
+    e.contact_s = 1e-3;
+    const double f0 = first_zero_hz(shape, 1e-3);
+    EXPECT_LT(std::abs(contact_factor(e, 0.0, f0)), 2e-4) << to_string(shape);
+    EXPECT_GT(std::abs(contact_factor(e, 0.0, 0.9 * f0)), std::abs(contact_factor(e, 0.0, f0))) << to_string(shape);
+  }
 }
 
 }  // namespace
