@@ -1,7 +1,7 @@
 // hit_position: strikes that move. Where a strike lands sets how strongly each mode sounds (the mode
 // shape at the hit point), so the modes' amplitudes change from strike to strike by more than a gain,
 // in a pattern the modes share. Detector: on the modes' log-amplitude residuals (measured / model), with
-// each strike's gain and smooth spectral tilt taken out (a contact's brightness is not a hit point),
+// each strike's gain, smooth spectral tilt and contact mismatch taken out (a contact is not a hit point),
 // a pattern fitted on the other strikes predicts half of a held-out strike's modes from the other half
 // better than a gain alone, by enough (bi-cross-validation; rank 0 wins on independent per-mode scatter,
 // which no model can predict). Extension: with an object's mode shapes (a bar or plate parameter set),
@@ -15,6 +15,7 @@
 #include <random>
 
 #include "analysis/audit/baseline_fit.hpp"
+#include "analysis/audit/contact_spectrum.hpp"
 #include "analysis/audit/effect_catalog.hpp"
 
 namespace ms::audit {
@@ -70,15 +71,32 @@ Residuals residuals(const AuditData& data, const AuditModel& model, const std::v
   return r;
 }
 
-// Each strike's smooth spectral tilt (1, log f, log^2 f) taken out of its row.
-Eigen::MatrixXd without_tilt(const Eigen::MatrixXd& ln, const AuditModel& model, const std::vector<std::size_t>& modes) {
-  Eigen::MatrixXd basis(ln.cols(), 3);
-  for (Eigen::Index j = 0; j < ln.cols(); ++j) {
-    const double x = std::log(model.modes[modes[std::size_t(j)]].freq_hz / 1000.0);
-    basis.row(j) << 1.0, x, x * x;
+// Each strike's smooth spectral tilt (1, log f, log^2 f) taken out of its row, and, where the model has a
+// contact, what a slightly longer or shorter contact would change (d ln|G| / d ln tau at the strike's
+// tau): a contact fitted a little off leaves a pattern that is not a hit point.
+Eigen::MatrixXd without_tilt(const Eigen::MatrixXd& ln, const AuditModel& model, const std::vector<std::size_t>& modes,
+                             const std::vector<std::size_t>& strikes) {
+  Eigen::MatrixXd out = ln;
+  for (Eigen::Index i = 0; i < ln.rows(); ++i) {
+    const std::size_t s = strikes[std::size_t(i)];
+    const double tau = model.contact_s.empty() ? 0.0 : model.contact_s[s];
+    Eigen::MatrixXd basis(ln.cols(), tau > 0.0 ? 4 : 3);
+    for (Eigen::Index j = 0; j < ln.cols(); ++j) {
+      const std::size_t n = modes[std::size_t(j)];
+      const double f = model.modes[n].freq_hz, x = std::log(f / 1000.0);
+      basis(j, 0) = 1.0;
+      basis(j, 1) = x;
+      basis(j, 2) = x * x;
+      if (tau > 0.0) {
+        const double d = strike_decay(model, s, n);
+        const auto g = [&](double t) { return std::log(std::max(contact_gain(model.contact_shape, t, d, f), 1e-6)); };
+        basis(j, 3) = (g(1.1 * tau) - g(tau / 1.1)) / (2.0 * std::log(1.1));
+      }
+    }
+    const Eigen::MatrixXd projector = basis * basis.completeOrthogonalDecomposition().pseudoInverse();
+    out.row(i) = ln.row(i) - ln.row(i) * projector.transpose();
   }
-  const Eigen::MatrixXd projector = basis * basis.completeOrthogonalDecomposition().pseudoInverse();
-  return ln - ln * projector.transpose();
+  return out;
 }
 
 // Halves of a strike's modes for bi-cross-validation: four different splits (alternate modes, alternate
@@ -314,10 +332,10 @@ Detection detect(const AuditData& data, const AuditModel& current) {
     c.pattern_rms = std::sqrt(held_out_half_mse_object(r.ln, shapes_on(current, r.modes)));
     c.rank = c.pattern_rms < c.gain_only_rms ? 1 : 0;
   } else {
-    c = choose_rank(without_tilt(r.ln, current, r.modes));
+    c = choose_rank(without_tilt(r.ln, current, r.modes, r.strikes));
   }
   d.statistic = kDbPerNeper * (c.gain_only_rms - c.pattern_rms);
-  const double null_db = current.hit.from_object() ? 0.0 : scatter_improvement_db(without_tilt(r.ln, current, r.modes));
+  const double null_db = current.hit.from_object() ? 0.0 : scatter_improvement_db(without_tilt(r.ln, current, r.modes, r.strikes));
   d.passes = c.rank >= 1 && d.statistic >= kMinImprovementDb && d.statistic > null_db &&
              data.strike_variation_db >= kMinStrikeVariationDb;
   char buf[400];
