@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "analysis/audit/contact_spectrum.hpp"
+#include "analysis/audit/room_power.hpp"
 #include "synthesis/effects.hpp"
 #include "synthesis/excitation.hpp"
 #include "synthesis/resonator_bank.hpp"
@@ -105,10 +106,26 @@ void add_band_noise_power(BarkSpectrogram& spec, const SpectrogramGrid& g, const
       spec.at(f, b) += variance[b] * g.window_energy * double(g.band_bins[b]);
 }
 
-Spectra predict_spectra(const AuditModel& model, const AuditData& data, std::size_t s, double* direct_energy) {
-  const MeasuredStrikes& ms_ = data.measured;
+ModalModel dry_strike_model(const AuditModel& model, std::size_t s, double fs, std::vector<std::size_t>* owner) {
   ModalModel modal = strike_model(model, s);
-  drop_modes_at_or_above(modal, 0.5 * ms_.sample_rate_hz);
+  std::vector<std::size_t> of;  // a doublet renders two modes
+  for (std::size_t n = 0; n < model.modes.size(); ++n) of.insert(of.end(), model.modes[n].doublet.split_hz > 0.0 ? 2 : 1, n);
+  if (model.room.enabled) {
+    for (std::size_t j = 0; j < modal.modes.size(); ++j) modal.modes[j].amp *= model.modes[of[j]].room_gain;
+    make_dry(modal, room_rates(model.room, fs), fs);
+  }
+  std::size_t j = 0;
+  std::erase_if(of, [&](std::size_t) { return modal.modes[j++].freq_hz >= 0.5 * fs; });
+  drop_modes_at_or_above(modal, 0.5 * fs);
+  if (owner) *owner = std::move(of);
+  return modal;
+}
+
+Spectra predict_spectra(const AuditModel& model, const AuditData& data, std::size_t s, double* direct_energy,
+                        bool reverberant) {
+  const MeasuredStrikes& ms_ = data.measured;
+  const ModalModel modal = dry_strike_model(model, s, ms_.sample_rate_hz);
+  const RoomRates rates = model.room.enabled ? room_rates(model.room, ms_.sample_rate_hz) : RoomRates{};
   Excitation impulse;  // the contact is already folded into amplitudes and phases
   const std::size_t samples = ms_.strikes[s].samples.size();
   const std::vector<float> y = render_bank(modal, impulse, ms_.sample_rate_hz, samples);
@@ -117,6 +134,10 @@ Spectra predict_spectra(const AuditModel& model, const AuditData& data, std::siz
   for (float v : y) energy += double(v) * double(v);
   if (direct_energy) *direct_energy = energy;
   for (std::size_t r = 0; r < kResolutions; ++r) {
+    if (model.room.enabled && reverberant) {
+      const RoomGrid rg = room_grid(ms_.grids[r]);
+      add_room_power(spec[r], ms_.grids[r], rg, room_footprint(ms_.grids[r], rg, modal, &rates), rates);
+    }
     if (model.reverb.enabled)
       add_decaying_noise_power(spec[r], ms_.grids[r], energy, model.reverb.rt60_s, model.reverb.level_db);
     if (model.transient.enabled && model.transient.band_limited()) {

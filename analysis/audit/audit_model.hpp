@@ -15,6 +15,7 @@
 #include "synthesis/effects.hpp"
 #include "synthesis/excitation.hpp"
 #include "synthesis/modal_model.hpp"
+#include "synthesis/room_response.hpp"
 
 namespace ms::audit {
 
@@ -27,6 +28,8 @@ struct AuditMode {
                             // its shape (or heard beyond one) starts inverted (pi)
   Doublets doublet;         // mode_doublet: f -+ split_hz/2 when split_hz > 0, `balance` of the amplitude
                             // in the upper mode (the pair keeps the mode's energy)
+  double room_gain = 1.0;   // reverberation: the dry amplitude in the room over the one the measured
+                            // amplitude implies, read from the spectrograms (room_fit.hpp)
 };
 
 struct AuditModel {
@@ -42,7 +45,8 @@ struct AuditModel {
   double contact_exponent = 0.0;
   PulseShape contact_shape = PulseShape::raised_cosine;  // ... the force's shape (contact_spectrum.hpp)
   std::vector<double> noise_band_variance;  // noise_floor: white-equivalent variance per Bark band (empty: none)
-  Reverb reverb;                         // reverberation: a white tail, energy relative to each strike's direct sound
+  Room room;                             // reverberation: the rendering convolved with a room (room_power.hpp)
+  Reverb reverb;                         // ... or, where the data prefer it, a white tail relative to each strike's direct sound
   AttackTransient transient;             // residual_transient: a white burst, likewise
   std::size_t transient_pseudo_modes = 0; // ... burst tracks the plain model had taken for modes (dropped)
   HitPattern hit;                        // hit_position: per-strike amplitude patterns beyond the gain
@@ -66,6 +70,12 @@ std::vector<std::size_t> all_strikes(const AuditData& data);
 // The modes that sound in strike s (gain, extra decay, contact factor, doublets applied).
 ModalModel strike_model(const AuditModel& model, std::size_t strike);
 
+// strike_model with the room's dry amplitudes (room_power.hpp, times each mode's room_gain) when the
+// model has a room, without the modes at or above Nyquist; owner (if given) receives the model mode
+// each rendered mode stands for.
+ModalModel dry_strike_model(const AuditModel& model, std::size_t strike, double sample_rate_hz,
+                            std::vector<std::size_t>* owner = nullptr);
+
 // Decay of mode n in strike s (law or given decay plus support excess).
 double strike_decay(const AuditModel& model, std::size_t strike, std::size_t mode);
 
@@ -77,9 +87,11 @@ double amp_before_gain(const AuditModel& model, std::size_t strike, std::size_t 
 double strike_amp(const AuditModel& model, std::size_t strike, std::size_t mode);
 
 // Bark spectrograms the model predicts for strike s (rendered on the data's grids, plus the expected
-// power of its noises); direct_energy (if given) receives sum(y^2) of the rendered modes.
+// power of its noises and its room); direct_energy (if given) receives sum(y^2) of the rendered modes.
+// In a room the modes are rendered with their dry amplitudes (dry_strike_model); reverberant = false
+// leaves out the room's reverberant part (its fit adds that in closed form).
 Spectra predict_spectra(const AuditModel& model, const AuditData& data, std::size_t strike,
-                        double* direct_energy = nullptr);
+                        double* direct_energy = nullptr, bool reverberant = true);
 
 // Adds the expected power of white noise of `variance` per Bark band (one value per band) on `grid`.
 void add_band_noise_power(BarkSpectrogram& spec, const SpectrogramGrid& grid, const std::vector<double>& variance);

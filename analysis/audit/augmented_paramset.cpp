@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "analysis/audit/effect_catalog.hpp"
+#include "analysis/audit/room_power.hpp"
 #include "synthesis/paramset_recipe.hpp"
 #include "synthesis/resonator_bank.hpp"
 
@@ -26,6 +27,7 @@ double noise_snr_db(const AuditData& data, const AuditModel& model, const ParamS
   double power = 0.0;
   for (float v : x) power += double(v) * double(v);
   power /= double(std::max<std::size_t>(x.size(), 1));
+  if (recipe.room.enabled) power *= 1.0 + std::pow(10.0, -recipe.room.drr_db / 10.0);
   if (recipe.reverb.enabled) power *= 1.0 + std::pow(10.0, recipe.reverb.level_db / 10.0);
   if (recipe.transient.enabled) power *= 1.0 + std::pow(10.0, recipe.transient.level_db / 10.0);
   const double sigma = noise_white_sigma(data, model);
@@ -46,12 +48,17 @@ ParamSetRecipe augmented_recipe(const AuditData& data, const AuditModel& model, 
   recipe.duration_s = double(data.measured.strikes[s].samples.size()) / recipe.sample_rate_hz;
   // Modes at this strike's gain, material decay; the support excess goes to effects.support_damping.
   const bool support = !model.extra_decay_per_s.empty();
+  // In a room the modes are the dry ones the room is applied to (room_power.hpp).
+  const RoomRates rates = model.room.enabled ? room_rates(model.room, recipe.sample_rate_hz) : RoomRates{};
   std::vector<double> extra;
   for (std::size_t n = 0; n < model.modes.size(); ++n) {
     const AuditMode& m = model.modes[n];
     if (m.freq_hz >= 0.5 * recipe.sample_rate_hz) continue;
-    const double amp = m.amp * model.gain[s] * std::exp(model.hit.log_factor(s, n));  // contact: excitation
+    double amp = m.amp * model.gain[s] * std::exp(model.hit.log_factor(s, n));  // contact: excitation
     const double e = support ? model.extra_decay_per_s[s][n] : 0.0;
+    if (model.room.enabled)
+      amp *= m.room_gain *
+             std::sqrt(dry_power_scale(rates, room_octave_band(m.freq_hz), (m.decay_per_s + e) / recipe.sample_rate_hz));
     auto emit = [&](double f, double a) {
       recipe.modes.push_back({f, m.decay_per_s, a, 0.0});
       extra.push_back(e);
@@ -67,7 +74,9 @@ ParamSetRecipe augmented_recipe(const AuditData& data, const AuditModel& model, 
   if (support) recipe.support_damping = SupportDamping{.per_mode_decay_per_s = extra};
   if (const double tau = model.contact_s.empty() ? 0.0 : model.contact_s[s]; tau > 0.0)
     recipe.excitation = {.shape = model.contact_shape, .contact_s = tau};
-  // Three seeds: noises drawn from one seed would be the same sequence, correlated, and add 3 dB too much.
+  // Distinct seeds: noises drawn from one seed would be the same sequence, correlated, and add 3 dB too much.
+  recipe.room = model.room;
+  recipe.room.seed = 4;
   recipe.reverb = model.reverb;
   recipe.reverb.seed = 2;
   recipe.transient = model.transient;

@@ -1,8 +1,9 @@
 // The audit's improved model as a parameter set (YAML, readable by load_paramset and `modalstudy
 // synth`): the fitted modes of one strike (the hardest), with the named effects expressed in the
 // existing keys: contact -> excitation raised_cosine, support damping -> effects.support_damping
-// per_mode_decay_per_s, doublets -> both modes listed, noise floor -> effects.noise, room tail and
-// attack burst -> effects.reverb and effects.transient.
+// per_mode_decay_per_s, doublets -> both modes listed, noise floor -> effects.noise, room ->
+// effects.room (the modes then the dry ones it is applied to), an additive tail and an attack burst ->
+// effects.reverb and effects.transient.
 #pragma once
 #include <cstddef>
 #include <string>

@@ -4,11 +4,14 @@
 #include <array>
 #include <cmath>
 
+#include "analysis/audit/gap_target.hpp"
+#include "analysis/audit/grid_cross_validation.hpp"
+
 namespace ms::audit {
 
 DecayingNoiseFit fit_decaying_noise(const AuditData& data, const AuditModel& without,
                                     const std::vector<std::size_t>& strikes, double t60_min_s, double t60_max_s,
-                                    double level_min_db, double level_max_db) {
+                                    double level_min_db, double level_max_db, bool refine) {
   // The modal rendering does not depend on the noise: render once per strike, add the noise analytically.
   std::vector<Spectra> base;
   std::vector<double> energy;
@@ -17,37 +20,17 @@ DecayingNoiseFit fit_decaying_noise(const AuditData& data, const AuditModel& wit
     base.push_back(predict_spectra(without, data, s, &e));
     energy.push_back(e);
   }
-  // gap_map's arithmetic with the measured levels clamped once (the search evaluates ~100 candidates).
+  const GapTarget target(data, strikes);
   const Grids& grids = data.measured.grids;
-  std::vector<std::array<std::vector<double>, kResolutions>> measured_db(strikes.size());
-  std::vector<std::array<double, kResolutions>> floor_db(strikes.size());
-  for (std::size_t i = 0; i < strikes.size(); ++i)
-    for (std::size_t r = 0; r < kResolutions; ++r) {
-      const BarkSpectrogram& m = data.measured.strikes[strikes[i]].spectra[r];
-      double peak = -400.0;
-      for (double p : m.power) peak = std::max(peak, level_db(p));
-      floor_db[i][r] = peak - kGapFloorDb;
-      for (double p : m.power) measured_db[i][r].push_back(std::max(level_db(p), floor_db[i][r]));
-    }
-  BarkSpectrogram spec;
+  Spectra spec;
+  std::vector<double> per_strike(strikes.size());
   const auto gap_of = [&](double t60, double level) {
     double sum = 0.0;
     for (std::size_t i = 0; i < strikes.size(); ++i) {
-      double total = 0.0;
-      std::size_t count = 0;
-      for (std::size_t r = 0; r < kResolutions; ++r) {
-        spec = base[i][r];
-        add_decaying_noise_power(spec, grids[r], energy[i], t60, level);
-        const std::vector<double>& meas = measured_db[i][r];
-        const double floor = floor_db[i][r];
-        for (std::size_t c = 0; c < meas.size() && c < spec.power.size(); ++c) {
-          const double a = meas[c], b = std::max(level_db(spec.power[c]), floor);
-          if (a <= floor && b <= floor) continue;
-          total += std::abs(b - a);
-          ++count;
-        }
-      }
-      sum += count > 0 ? total / double(count) : 0.0;
+      spec = base[i];
+      for (std::size_t r = 0; r < kResolutions; ++r) add_decaying_noise_power(spec[r], grids[r], energy[i], t60, level);
+      per_strike[i] = target.strike_gap(i, spec);
+      sum += per_strike[i];
     }
     return strikes.empty() ? 0.0 : sum / double(strikes.size());
   };
@@ -55,24 +38,33 @@ DecayingNoiseFit fit_decaying_noise(const AuditData& data, const AuditModel& wit
   best.t60_s = t60_min_s;
   best.level_db = level_min_db;
   best.gap_db = gap_of(best.t60_s, best.level_db);
-  const auto search = [&](double lt_lo, double lt_hi, int nt, double l_lo, double l_hi, int nl) {
+  std::vector<std::vector<double>> table;  // the coarse grid's per-strike gaps
+  const auto search = [&](double lt_lo, double lt_hi, int nt, double l_lo, double l_hi, int nl, bool tabulate) {
     for (int i = 0; i < nt; ++i) {
       const double t60 = std::exp(lt_lo + (lt_hi - lt_lo) * double(i) / double(std::max(nt - 1, 1)));
       for (int j = 0; j < nl; ++j) {
         const double level = l_lo + (l_hi - l_lo) * double(j) / double(std::max(nl - 1, 1));
         const double gap = gap_of(t60, level);
-        if (gap < best.gap_db) best = {t60, level, gap};
+        if (tabulate) table.push_back(per_strike);
+        if (gap < best.gap_db) {
+          best.t60_s = t60;
+          best.level_db = level;
+          best.gap_db = gap;
+        }
       }
     }
   };
   const double lt_min = std::log(t60_min_s), lt_max = std::log(t60_max_s);
   const double coarse_t = (lt_max - lt_min) / 5.0, coarse_l = (level_max_db - level_min_db) / 7.0;
-  search(lt_min, lt_max, 6, level_min_db, level_max_db, 8);
+  search(lt_min, lt_max, 6, level_min_db, level_max_db, 8, true);
+  best.grid_cv_gap_db = leave_one_out_gap(table);
+  if (!refine) return best;
   // Refine twice around the best cell (5 x 5, a quarter of the step each time), inside the ranges.
   for (double k : {0.5, 0.125}) {
     const double lt = std::log(best.t60_s);
     search(std::max(lt_min, lt - 2 * k * coarse_t), std::min(lt_max, lt + 2 * k * coarse_t), 5,
-           std::max(level_min_db, best.level_db - 2 * k * coarse_l), std::min(level_max_db, best.level_db + 2 * k * coarse_l), 5);
+           std::max(level_min_db, best.level_db - 2 * k * coarse_l), std::min(level_max_db, best.level_db + 2 * k * coarse_l), 5,
+           false);
   }
   return best;
 }

@@ -11,6 +11,7 @@
 #include "synthesis/effects.hpp"
 #include "synthesis/excitation.hpp"
 #include "synthesis/resonator_bank.hpp"
+#include "synthesis/room_response.hpp"
 
 namespace ms::audit {
 
@@ -93,7 +94,7 @@ struct EffectParameters {
   double tau_hard_s = 0.0;            // contact of the hardest strike
   double contact_exponent = 0.0;      // tau = tau_hard (g / g_max)^-p
   double noise_below_db = 110.0;      // under the hardest strike's strongest mode
-  Reverb reverb;
+  Room room;
   AttackTransient transient;
   // hit_position: mode n's shape sin(k_n x + theta_n) (k_n x in radians, x a fraction of the object's
   // length), struck at x_s per strike; amplitudes relative to the shape at the nominal hit x = 0.5.
@@ -151,11 +152,18 @@ EffectParameters draw_effects(std::mt19937_64& rng, const std::vector<std::strin
   }
   std::mt19937_64 rng2(hc.seed * 1000003u + 11u);
   Uniform U(0.0, 1.0);
-  // reverberation: a white tail of RT60 0.2-0.8 s, -48 .. -34 dB re the direct sound (louder tails
-  // bury the faint modes the extraction needs).
+  // reverberation: a room (synthesis/room_response), the same impulse response for every strike. RT60
+  // 0.4-1 s at 125 Hz falling log-linearly over the octaves to 0.3 s .. that at 8 kHz (air and walls
+  // absorb the highs), DRR +8 .. -2 dB. Drawn from a stream of its own: the transient's draws stay.
   if (hidden("reverberation")) {
-    e.reverb = {0.2 + 0.6 * U(rng2), -48.0 + 14.0 * strength("reverberation"), 0, true};
-    hc.summary += printed("; reverb RT60 %.2f s at %.1f dB", e.reverb.rt60_s, e.reverb.level_db);
+    std::mt19937_64 rng_room(hc.seed * 2862933555777941757ULL + 3037000493ULL);
+    const double t_low = 0.4 + 0.6 * U(rng_room), t_high = 0.3 + (t_low - 0.3) * U(rng_room);
+    const std::size_t bands = kRoomOctaveCentresHz.size();
+    std::vector<double> rt60_s;
+    for (std::size_t b = 0; b < bands; ++b) rt60_s.push_back(t_low * std::pow(t_high / t_low, double(b) / double(bands - 1)));
+    e.room = {.rt60_s = rt60_s, .drr_db = 8.0 - 10.0 * strength("reverberation"), .seed = hc.seed * 131u + 7u,
+              .enabled = true};
+    hc.summary += printed("; room RT60 %.2f s (125 Hz) .. %.2f s (8 kHz), DRR %.1f dB", t_low, t_high, e.room.drr_db);
   }
   // residual_transient: a white burst decaying 60 dB in 3-10 ms, -30 .. -15 dB re the direct sound.
   if (hidden("residual_transient")) {
@@ -213,7 +221,7 @@ ModalModel strike_modes(const HiddenCase& hc, std::size_t s, double scale, const
   return m;
 }
 
-// Strike s rendered with its contact, reverberation and transient, after a pre-roll, with the noise floor.
+// Strike s rendered with its contact, room and transient, after a pre-roll, with the noise floor.
 Recording render_strike(const HiddenCase& hc, std::size_t s, double scale, double gmax, const EffectParameters& e,
                         const GeneratorOptions& opt, StrikeDraws& draws) {
   const double fs = opt.sample_rate_hz;
@@ -226,11 +234,10 @@ Recording render_strike(const HiddenCase& hc, std::size_t s, double scale, doubl
   }
   drop_modes_at_or_above(m, 0.5 * fs);
   std::vector<float> y = render_bank(m, excitation, fs, frames);
-  Reverb reverb = e.reverb;
+  apply_room(y, fs, e.room);
   AttackTransient transient = e.transient;
-  reverb.seed = hc.seed * 131u + s;  // separate streams: one seed would correlate the two noises
-  transient.seed = reverb.seed ^ 0x5851f42d4c957f2dULL;
-  add_reverb_and_transient(y, fs, reverb, transient);
+  transient.seed = (hc.seed * 131u + s) ^ 0x5851f42d4c957f2dULL;
+  add_reverb_and_transient(y, fs, Reverb{}, transient);
   Recording r;
   r.name = "strike" + std::to_string(s + 1);
   r.sample_rate_hz = fs;

@@ -42,7 +42,10 @@ std::vector<std::complex<double>> esprit(const std::complex<double>* y, std::siz
   const Eigen::VectorXd& lambda = eig.eigenvalues();  // ascending
   // Marchenko-Pastur-like edge for the noise eigenvalues, times a safety factor.
   const double edge = std::pow(1.0 + std::sqrt(double(m) / double(rows)), 2.0);
-  const double threshold = options.threshold_factor * edge * double(rows) * options.noise_power;
+  double noise_power = options.noise_power;
+  if (options.own_noise_factor > 0.0)
+    noise_power = std::max(noise_power, options.own_noise_factor * lambda(Eigen::Index(m / 2)) / double(rows));
+  const double threshold = options.threshold_factor * edge * double(rows) * noise_power;
   std::size_t order = 0;
   for (Eigen::Index i = Eigen::Index(m) - 1; i >= 0; --i)
     if (lambda(i) > threshold) ++order;

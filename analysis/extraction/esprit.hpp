@@ -15,6 +15,10 @@ struct EspritOptions {
   // noise after band filtering). Eigenvalues above threshold_factor * rows * noise_power are signal.
   double noise_power = 0.0;
   double threshold_factor = 4.0;
+  // > 0: the noise is also at least this times the median eigenvalue per row (most of the window's
+  // eigenvalues are noise when the order is small). Under a room's tail, which follows the modes'
+  // spectrum, the band's own level is what a candidate must stand out of, not the broadband one.
+  double own_noise_factor = 0.0;
 };
 
 // Poles z_k (complex, |z| < 1 for decaying modes), strongest first. Empty when y is too short.

@@ -1,0 +1,264 @@
+// reverberation: the strikes were recorded in a room. A room is a convolution: the direct sound
+// convolved with the room's impulse response, the same for every strike (a room answers every strike
+// alike). Extension: the model's rendering in a room (room_power.hpp: synthesis/room_response's
+// decaying noise, an RT60 per octave band and a direct-to-reverberant ratio, fitted by room_fit.hpp),
+// so that the fitted values are an effects.room block; or, where held-out strikes prefer it, the
+// additive white tail of effects.reverb (60 dB decay time and energy relative to each strike's direct
+// sound). The two are compared by leave-one-strike-out cross-validation of their coarse grids on the
+// training strikes (grid_cross_validation.hpp).
+//
+// In a room the extraction also finds the room's answer to the modes as modes of its own (components
+// near a much stronger mode, decaying far from the object's damping law), and its amplitude of a mode
+// holds part of that mode's reverberation. The extension drops the tracks a rule names the room's,
+// fits the room coarsely, reads every mode's amplitude again from the spectrograms with the room in
+// the model (dropping a mode beside a stronger one when the room's answer fits better without it),
+// refits the law and amplitudes on what is left, and fits the room.
+// Detector: the extension lowers the in-sample gap by enough, and the room itself (its reverberant part
+// and its dry amplitudes) by some of it: dropping tracks and reading amplitudes again alone do not
+// count as a room.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "analysis/audit/baseline_fit.hpp"
+#include "analysis/audit/decaying_noise_fit.hpp"
+#include "analysis/audit/effect_catalog.hpp"
+#include "analysis/audit/room_fit.hpp"
+#include "synthesis/bark.hpp"
+
+namespace ms::audit {
+
+namespace {
+
+// In-sample gap improvement (tuning seeds 1000-1059, 1100-1179: rooms 2.46 dB and more in the first round;
+// once the hidden effect is named, other cases reach 0.81, a strong contact), of which the room's own
+// part (see detect) at least kMinRoomGainDb.
+constexpr double kMinGapImprovementDb = 1.0, kMinRoomGainDb = 0.08;
+// The additive tail: 0.1-2.5 s (longer ones are indistinguishable from a noise floor over a strike).
+constexpr double kMinTailRt60S = 0.1, kMaxTailRt60S = 2.5;
+constexpr double kMinTailLevelDb = -60.0, kMaxTailLevelDb = 0.0;
+// A track is the room's if a track within one Bark carries kBuriedDb more energy, or kStrongerDb more
+// while it decays kFarFromLaw times faster (or 1 / kBelowLaw slower) than the object's law.
+constexpr double kBuriedDb = 30.0, kStrongerDb = 6.0, kFarFromLaw = 6.0, kBelowLaw = 3.0;
+// The room is fitted on the loudest training strikes (most of its tail above the gap's floor), at
+// least kMinRoomStrikes of them.
+constexpr std::size_t kFitStrikes = 4, kMinRoomStrikes = 3;
+
+// Median over the strikes of a track's decay and energy (amp^2 / 4d, per unit strike gain, dB).
+struct TrackLevel {
+  double decay_per_s = 0.0, energy_db = -400.0;
+};
+
+TrackLevel track_level(const AuditData& data, const AuditModel& model, std::size_t n, const std::vector<std::size_t>& train) {
+  std::vector<double> decay, energy;
+  for (std::size_t s : train) {
+    const TrackObservation& o = data.tracks[std::size_t(model.modes[n].track)].strikes[s];
+    if (!o.present || o.decay_per_s <= 0.0) continue;
+    decay.push_back(o.decay_per_s);
+    energy.push_back(10.0 * std::log10(o.amp * o.amp / (4.0 * o.decay_per_s) / (model.gain[s] * model.gain[s])));
+  }
+  return decay.empty() ? TrackLevel{} : TrackLevel{median(decay), median(energy)};
+}
+
+// Rayleigh law of the points by relative least squares, refitted without the points more than 2.5
+// times off it (twice): in a room, tracks near a mode's frequency decay at the room's rate.
+DampingLaw trimmed_law(std::vector<DampingPoint> points) {
+  DampingLaw law = fit_law_relative(points, DampingKind::rayleigh);
+  for (int round = 0; round < 2; ++round) {
+    std::vector<DampingPoint> near;
+    for (const DampingPoint& p : points) {
+      const double c = law.decay_per_s(p.lambda_rad2_s2) * 2.0;  // c = 2d
+      if (p.c_per_s < 2.5 * c && c < 2.5 * p.c_per_s) near.push_back(p);
+    }
+    if (near.size() < 3 || near.size() == points.size()) break;
+    points = std::move(near);
+    law = fit_law_relative(points, DampingKind::rayleigh);
+  }
+  return law;
+}
+
+// What the model's modes look like beside each other: for each, by how much (dB) the strongest track
+// within one Bark exceeds it, and whether it is the room's (see the header).
+struct RoomMadeTracks {
+  std::vector<double> stronger_db;
+  std::vector<bool> made;
+};
+
+RoomMadeTracks room_made(const AuditData& data, const AuditModel& model, const std::vector<std::size_t>& train) {
+  const std::size_t count = model.modes.size();
+  std::vector<TrackLevel> level(count);
+  RoomMadeTracks out{std::vector<double>(count, -400.0), std::vector<bool>(count, false)};
+  std::vector<double>& stronger = out.stronger_db;
+  for (std::size_t n = 0; n < count; ++n)
+    if (model.modes[n].track >= 0) level[n] = track_level(data, model, n, train);
+  for (std::size_t n = 0; n < count; ++n)
+    for (std::size_t m = 0; m < count; ++m)
+      if (m != n && std::abs(bark_zwicker_terhardt(model.modes[m].freq_hz) - bark_zwicker_terhardt(model.modes[n].freq_hz)) < 1.0)
+        stronger[n] = std::max(stronger[n], level[m].energy_db - level[n].energy_db);
+  // The object's law from the tracks that dominate their neighbourhood.
+  std::vector<DampingPoint> points;
+  for (std::size_t n = 0; n < count; ++n)
+    if (model.modes[n].track >= 0 && level[n].decay_per_s > 0.0 && stronger[n] < 0.0)
+      points.push_back(damping_point(model.modes[n].freq_hz, level[n].decay_per_s));
+  const bool have_law = points.size() >= 3;
+  const DampingLaw law = have_law ? trimmed_law(points) : DampingLaw{};
+  const auto law_decay = [&](std::size_t n) {
+    const double omega = 2.0 * std::numbers::pi * model.modes[n].freq_hz;
+    return std::max(1e-3, law.decay_per_s(omega * omega));
+  };
+  for (std::size_t n = 0; n < count; ++n) {
+    if (model.modes[n].track < 0 || level[n].decay_per_s <= 0.0) continue;
+    const double ratio = have_law ? level[n].decay_per_s / law_decay(n) : 1.0;
+    out.made[n] = stronger[n] >= kBuriedDb || (stronger[n] >= kStrongerDb && (ratio >= kFarFromLaw || ratio * kBelowLaw <= 1.0));
+  }
+  return out;
+}
+
+// Drops the flagged modes with their per-mode values; refits the plain law (where the recordings
+// gave it) and the amplitudes on the rest. Returns how many went.
+std::size_t drop_modes(const AuditData& data, AuditModel& model, const std::vector<bool>& drop,
+                       const std::vector<std::size_t>& train) {
+  const std::size_t dropped = std::size_t(std::count(drop.begin(), drop.end(), true));
+  if (dropped == 0 || dropped == drop.size()) return 0;
+  const auto keep_rows = [&](auto& rows) {
+    if (rows.size() != drop.size()) return;
+    std::size_t n = 0;
+    std::erase_if(rows, [&](const auto&) { return drop[n++]; });
+  };
+  keep_rows(model.modes);
+  for (auto& per_mode : model.extra_decay_per_s) keep_rows(per_mode);
+  keep_rows(model.hit.loading);
+  for (auto& per_mode : model.hit.shape_ln) keep_rows(per_mode);
+  if (model.law_fitted && model.law.kind == DampingKind::rayleigh && model.extra_decay_per_s.empty()) {
+    std::vector<std::size_t> index;
+    const std::vector<DampingPoint> all = track_median_points(data, train, &index);
+    std::vector<DampingPoint> kept;
+    for (std::size_t i = 0; i < index.size(); ++i)
+      for (const AuditMode& m : model.modes)
+        if (m.track == int(index[i])) kept.push_back(all[i]);
+    model.law = trimmed_law(kept);
+    apply_law(model);
+  }
+  fit_amplitudes(model, data, train);
+  return dropped;
+}
+
+// The model in a room: the tracks the room made dropped (those the rule above names), the room fitted
+// coarsely, every mode's amplitude read again with it in the model (dropping the modes beside a
+// stronger one that the room's answer explains better), and the room fitted.
+AuditModel with_room(const AuditData& data, AuditModel roomed, const std::vector<std::size_t>& strikes,
+                     double* grid_cv_gap_db) {
+  drop_modes(data, roomed, room_made(data, roomed, strikes).made, strikes);
+  const Room coarse = fit_room(data, roomed, strikes, true).room;
+  // Every mode's amplitude read again (the extraction's amplitude of a mode in a room also holds parts
+  // of its reverberation and of its neighbours'); those beside a stronger one may go (they may be the
+  // room's answer to it).
+  const std::vector<double> stronger = room_made(data, roomed, strikes).stronger_db;
+  std::vector<bool> may_drop(roomed.modes.size());
+  for (std::size_t n = 0; n < may_drop.size(); ++n) may_drop[n] = stronger[n] > 0.0;
+  const std::vector<double> read = read_mode_amplitudes(data, roomed, coarse, strikes, may_drop);
+  std::vector<bool> explained(read.size());
+  for (std::size_t n = 0; n < read.size(); ++n) {
+    explained[n] = read[n] == 0.0;
+    roomed.modes[n].room_gain *= read[n];
+  }
+  drop_modes(data, roomed, explained, strikes);
+  const RoomFit fit = fit_room(data, roomed, strikes);
+  roomed.room = fit.room;
+  *grid_cv_gap_db = fit.grid_cv_gap_db;
+  return roomed;
+}
+
+// The model with the additive tail fitted on the strikes (refine = false: its coarse grid only).
+AuditModel with_tail(const AuditData& data, AuditModel plain, const std::vector<std::size_t>& strikes, bool refine,
+                     double* grid_cv_gap_db = nullptr) {
+  const DecayingNoiseFit f = fit_decaying_noise(data, plain, strikes, kMinTailRt60S, kMaxTailRt60S, kMinTailLevelDb,
+                                                kMaxTailLevelDb, refine);
+  plain.reverb = {.rt60_s = f.t60_s, .level_db = f.level_db, .enabled = true};
+  if (grid_cv_gap_db) *grid_cv_gap_db = f.grid_cv_gap_db;
+  return plain;
+}
+
+// Both families fitted on the training strikes; the one whose coarse grid predicts held-out strikes
+// better (leave one strike out, grid_cross_validation.hpp) extends the model. The room's mode set is
+// chosen on all training strikes; its level and decay are cross-validated like the tail's.
+void extend(const AuditData& data, AuditModel& model, const std::vector<std::size_t>& train) {
+  AuditModel plain = model;
+  plain.room = {};
+  plain.reverb = {};
+  // A room answers every strike alike: the loudest few fix it (and keep the fits fast).
+  std::vector<std::size_t> loudest = train;
+  std::sort(loudest.begin(), loudest.end(), [&](std::size_t a, std::size_t b) { return plain.gain[a] > plain.gain[b]; });
+  loudest.resize(std::min(loudest.size(), kFitStrikes));
+  // A room is chosen by cross-validation over the strikes: with fewer than kMinRoomStrikes there is
+  // too little to hold out (the free and muted kenkeni bell: 2 strikes), and the tail stays.
+  double room_cv = 0.0, tail_cv = 0.0;
+  if (loudest.size() < kMinRoomStrikes) {
+    model = with_tail(data, plain, loudest, true);
+  } else {
+    AuditModel room = with_room(data, plain, loudest, &room_cv);
+    with_tail(data, plain, loudest, false, &tail_cv);
+    model = room_cv <= tail_cv ? std::move(room) : with_tail(data, plain, loudest, true);
+  }
+  // Amplitudes and gains of every training strike (the fits saw the loudest).
+  fit_amplitudes(model, data, train);
+}
+
+std::string rt60_list(const Room& room) {
+  std::string s;
+  for (std::size_t b = 0; b < room.rt60_s.size(); ++b) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%s%.2f", b ? " " : "", room.rt60_s[b]);
+    s += buf;
+  }
+  return s;
+}
+
+Detection detect(const AuditData& data, const AuditModel& current) {
+  AuditModel with = current;
+  extend(data, with, all_strikes(data));
+  const double before = mean_gap(current, data), after = mean_gap(with, data);
+  Detection d;
+  d.statistic = before - after;
+  d.passes = d.statistic >= kMinGapImprovementDb;
+  // The room itself must explain something: with it silenced (its level 200 dB down) the tracks it
+  // dropped and the amplitudes it read again stay, and can lower a gap where the tracks were off for
+  // another reason (generated rooms: 0.10-0.72 dB).
+  if (with.room.enabled) {
+    AuditModel silent = with;
+    silent.room.drr_db = 200.0;
+    d.passes = d.passes && mean_gap(silent, data) - after >= kMinRoomGainDb;
+  }
+  char buf[400];
+  if (with.room.enabled)
+    std::snprintf(buf, sizeof buf,
+                  "the strikes ring on in a room (RT60 %s s over the octaves 125 Hz-8 kHz, DRR %.1f dB; %zu tracks "
+                  "were its answer to the modes' onsets); the room lowers the gap from %.2f to %.2f dB",
+                  rt60_list(with.room).c_str(), with.room.drr_db, current.modes.size() - with.modes.size(), before, after);
+  else
+    std::snprintf(buf, sizeof buf,
+                  "a tail common to all bands decays independently of the modes (RT60 %.2f s, %.1f dB re the direct "
+                  "sound; held-out strikes prefer it to a room); adding it lowers the gap from %.2f to %.2f dB",
+                  with.reverb.rt60_s, with.reverb.level_db, before, after);
+  d.evidence = buf;
+  return d;
+}
+
+Parameters parameters(const AuditData&, const AuditModel& model) {
+  if (!model.room.enabled) return {{"rt60_s", model.reverb.rt60_s}, {"level_db", model.reverb.level_db}};
+  Parameters p;
+  for (std::size_t b = 0; b < model.room.rt60_s.size(); ++b)
+    p.emplace_back("rt60_" + std::to_string(int(kRoomOctaveCentresHz[b])) + "hz_s", model.room.rt60_s[b]);
+  p.emplace_back("drr_db", model.room.drr_db);
+  return p;
+}
+
+}  // namespace
+
+Effect reverberation_effect() {
+  return {.name = "reverberation", .min_strikes = 1, .penalty_db = 0.05,
+          .detect = detect, .extend = extend, .parameters = parameters};
+}
+
+}  // namespace ms::audit

@@ -1,0 +1,290 @@
+#include "analysis/audit/room_fit.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "analysis/audit/gap_target.hpp"
+#include "analysis/audit/grid_cross_validation.hpp"
+#include "analysis/audit/room_power.hpp"
+#include "analysis/estimation/local_search.hpp"
+#include "synthesis/resonator_bank.hpp"
+
+namespace ms::audit {
+
+namespace {
+
+using Rates = std::array<double, kRoomBands>;
+
+constexpr double kMinRead = 0.1, kMaxRead = 3.0;  // a mode's amplitude read again: within these factors
+
+// Minimum of f over [lo, hi] by golden-section search (`steps` evaluations after two).
+template <class F>
+double golden_minimum(F f, double lo, double hi, int steps, double& value) {
+  constexpr double kPhi = 0.6180339887498949;
+  double c = hi - kPhi * (hi - lo), d = lo + kPhi * (hi - lo), fc = f(c), fd = f(d);
+  for (int i = 0; i < steps; ++i) {
+    if (fc < fd) {
+      hi = d;
+      d = c;
+      fd = fc;
+      c = hi - kPhi * (hi - lo);
+      fc = f(c);
+    } else {
+      lo = c;
+      c = d;
+      fc = fd;
+      d = lo + kPhi * (hi - lo);
+      fd = f(d);
+    }
+  }
+  value = std::min(fc, fd);
+  return fc < fd ? c : d;
+}
+
+// Everything a candidate room is scored with: the strikes' renderings and footprints, and the target.
+class RoomObjective {
+ public:
+  // The strikes rendered with the dry amplitudes of `room` (none: the measured ones).
+  RoomObjective(const AuditData& data, const AuditModel& without, const std::vector<std::size_t>& strikes,
+                const Room* room = nullptr)
+      : data_(data), model_(without), target_(data, strikes), fs_(data.measured.sample_rate_hz) {
+    for (std::size_t r = 0; r < kResolutions; ++r) room_grids_[r] = room_grid(data.measured.grids[r]);
+    rebase(room);
+  }
+
+  // Renders the strikes with the dry amplitudes of `room` (none: the measured amplitudes, each mode's
+  // room_gain then applied in closed form): candidates near it are scored with small corrections.
+  void rebase(const Room* room) {
+    model_.room = room ? *room : Room{};
+    const RoomRates rates = room ? room_rates(*room, fs_) : RoomRates{};
+    base_.clear();
+    footprints_.clear();
+    owners_.clear();
+    heard_.fill(false);
+    for (std::size_t s : target_.strikes()) {
+      base_.push_back(predict_spectra(model_, data_, s, nullptr, false));
+      std::vector<std::size_t> owner;
+      const ModalModel modal = dry_strike_model(model_, s, fs_, &owner);
+      std::array<RoomFootprint, kResolutions> fp;
+      for (std::size_t r = 0; r < kResolutions; ++r) {
+        fp[r] = room_footprint(data_.measured.grids[r], room_grids_[r], modal, room ? &rates : nullptr);
+        if (!room)
+          for (RoomFootprint::ModeTerms& m : fp[r].modes) m.extra_power = std::pow(model_.modes[owner[m.owner]].room_gain, 2);
+      }
+      for (const RoomFootprint::ModeTerms& m : fp[kDecay].modes) heard_[m.octave] = true;
+      footprints_.push_back(std::move(fp));
+      owners_.push_back(std::move(owner));
+    }
+  }
+
+  // Each model mode's amplitude read again from the spectrograms with the room (k, sigma2) in the
+  // model, one mode after another: the factor on its dry amplitude in [kMinRead, kMaxRead] that
+  // minimises the mean gap, or 0 where leaving the mode out does better and `may_drop` allows it.
+  std::vector<double> read_amplitudes(const Rates& k, double sigma2, const std::vector<bool>& may_drop) {
+    const RoomRates rates{k, sigma2};
+    const std::size_t modes = model_.modes.size(), strikes = base_.size();
+    // Per strike and resolution: the prediction; per model mode its power per cell (cell, power).
+    std::vector<Spectra> predicted(strikes);
+    std::vector<std::vector<std::vector<std::pair<std::size_t, double>>>> power(
+        modes, std::vector<std::vector<std::pair<std::size_t, double>>>(strikes * kResolutions));
+    std::vector<double> sum(strikes, 0.0), cells(strikes, 0.0);
+    for (std::size_t i = 0; i < strikes; ++i) {
+      predicted[i] = base_[i];
+      for (std::size_t r = 0; r < kResolutions; ++r) {
+        const SpectrogramGrid& g = data_.measured.grids[r];
+        add_room_power(predicted[i][r], g, room_grids_[r], footprints_[i][r], rates);
+        const RoomFrameSums sums = room_frame_sums(g, rates);
+        const std::size_t frames = predicted[i][r].frames, bands = predicted[i][r].bands;
+        std::vector<double> rendered(frames), added(frames);
+        std::vector<std::vector<double>> dense(modes);
+        for (const RoomFootprint::ModeTerms& m : footprints_[i][r].modes) {
+          std::vector<double>& d = dense[owners_[i][m.owner]];
+          if (d.empty()) d.assign(frames * bands, 0.0);
+          mode_frame_powers(m, g, rates, sums, frames, rendered.data(), added.data());
+          for (std::size_t fr = 0; fr < frames; ++fr)
+            for (const auto& [b, l] : m.leakage) d[fr * bands + b] += l * (rendered[fr] + added[fr]);
+        }
+        for (std::size_t n = 0; n < modes; ++n)
+          for (std::size_t c = 0; c < dense[n].size(); ++c)
+            if (dense[n][c] > 0.0) power[n][i * kResolutions + r].emplace_back(c, dense[n][c]);
+        const std::vector<double>& measured = target_.measured_db(i, r);
+        const double floor = target_.floor_db(i, r);
+        for (std::size_t c = 0; c < measured.size(); ++c) {
+          const double b = std::max(quick_level_db(predicted[i][r].power[c]), floor);
+          if (measured[c] <= floor && b <= floor) continue;
+          sum[i] += std::abs(b - measured[c]);
+          cells[i] += 1.0;
+        }
+      }
+    }
+    // Mean gap with mode n's power scaled by x^2 (all else as predicted now).
+    const auto gap_with = [&](std::size_t n, double x, bool apply) {
+      double total = 0.0;
+      for (std::size_t i = 0; i < strikes; ++i) {
+        double s = sum[i], c = cells[i];
+        for (std::size_t r = 0; r < kResolutions; ++r) {
+          const std::vector<double>& measured = target_.measured_db(i, r);
+          const double floor = target_.floor_db(i, r);
+          std::vector<double>& p = predicted[i][r].power;
+          for (auto& [cell, own] : power[n][i * kResolutions + r]) {
+            const double now = std::max(quick_level_db(p[cell]), floor);
+            const double next_power = std::max(p[cell] + (x * x - 1.0) * own, 1e-300);
+            const double next = std::max(quick_level_db(next_power), floor);
+            const bool was = !(measured[cell] <= floor && now <= floor), is = !(measured[cell] <= floor && next <= floor);
+            s += (is ? std::abs(next - measured[cell]) : 0.0) - (was ? std::abs(now - measured[cell]) : 0.0);
+            c += double(is) - double(was);
+            if (apply) {
+              p[cell] = next_power;
+              own *= x * x;
+            }
+          }
+        }
+        if (apply) {
+          sum[i] = s;
+          cells[i] = c;
+        }
+        total += c > 0.0 ? s / c : 0.0;
+      }
+      return total / double(std::max<std::size_t>(strikes, 1));
+    };
+    std::vector<double> factor(modes, 1.0);
+    for (std::size_t n = 0; n < modes; ++n) {
+      double best_value = gap_with(n, 1.0, false), best_x = 1.0;
+      const auto f = [&](double lx) { return gap_with(n, std::exp(lx), false); };
+      double value = 0.0;
+      const double lx = golden_minimum(f, std::log(kMinRead), std::log(kMaxRead), 10, value);
+      if (value < best_value) { best_value = value; best_x = std::exp(lx); }
+      if (may_drop[n] && gap_with(n, 0.0, false) < best_value) best_x = 0.0;
+      factor[n] = best_x;
+      gap_with(n, best_x, true);
+    }
+    return factor;
+  }
+
+  // Gap of each strike with the room (k, sigma2).
+  const std::vector<double>& strike_gaps(const Rates& k, double sigma2) {
+    const RoomRates rates{k, sigma2};
+    gaps_.assign(base_.size(), 0.0);
+    for (std::size_t i = 0; i < base_.size(); ++i) {
+      scratch_ = base_[i];
+      for (std::size_t r = 0; r < kResolutions; ++r)
+        add_room_power(scratch_[r], data_.measured.grids[r], room_grids_[r], footprints_[i][r], rates);
+      gaps_[i] = target_.strike_gap(i, scratch_);
+    }
+    return gaps_;
+  }
+
+  double gap(const Rates& k, double sigma2) {
+    const std::vector<double>& g = strike_gaps(k, sigma2);
+    double sum = 0.0;
+    for (double v : g) sum += v;
+    return g.empty() ? 0.0 : sum / double(g.size());
+  }
+
+  double sample_rate() const { return fs_; }
+  // Octave bands holding a mode (others can only matter through the onset's spectrum).
+  bool heard(std::size_t band) const { return heard_[band]; }
+
+ private:
+  const AuditData& data_;
+  AuditModel model_;
+  GapTarget target_;
+  double fs_;
+  std::array<RoomGrid, kResolutions> room_grids_;
+  std::vector<Spectra> base_;
+  std::vector<std::array<RoomFootprint, kResolutions>> footprints_;
+  std::vector<std::vector<std::size_t>> owners_;  // per strike: the model mode of each rendered mode
+  std::array<bool, kRoomBands> heard_{};
+  Spectra scratch_;
+  std::vector<double> gaps_;
+};
+
+double k_of(double rt60_s, double fs) { return std::log(1000.0) / (rt60_s * fs); }
+
+// RT60 over the octave bands: log RT60 = a + b u + c (u^2 - 1/2) with u from -1 (125 Hz) to 1 (8 kHz),
+// a smooth curve as rooms have (absorption changes slowly with frequency); bands without a mode are not
+// seen by the gap, and a free value per band would follow its noise.
+std::array<double, kRoomBands> log_rt60_curve(double a, double b, double c) {
+  std::array<double, kRoomBands> lt{};
+  for (std::size_t i = 0; i < kRoomBands; ++i) {
+    const double u = (double(i) - 3.0) / 3.0;
+    lt[i] = std::clamp(a + b * u + c * (u * u - 0.5), std::log(kMinRoomRt60S), std::log(kMaxRoomRt60S));
+  }
+  return lt;
+}
+
+}  // namespace
+
+RoomFit fit_room(const AuditData& data, const AuditModel& without, const std::vector<std::size_t>& strikes,
+                 bool coarse_only) {
+  RoomObjective objective(data, without, strikes);
+  const double fs = objective.sample_rate();
+  const auto rates_of = [&](const std::array<double, kRoomBands>& log_rt60) {
+    Rates k{};
+    for (std::size_t b = 0; b < kRoomBands; ++b) k[b] = k_of(std::exp(log_rt60[b]), fs);
+    return k;
+  };
+  // 1. One RT60 for every band and the DRR, on a grid, against the measured amplitudes.
+  double best = 1e300, lt_best = 0.0, drr_best = 0.0;
+  std::vector<std::vector<double>> table;  // [candidate][strike] gaps, for the cross-validated score
+  // (coarse_only: a coarser grid, 4 x 6.)
+  const std::vector<double> log_rt60s = coarse_only ? std::vector<double>{-1.7, -0.9, -0.1, 0.7}
+                                                    : std::vector<double>{-1.9, -1.2, -0.6, -0.1, 0.4, 1.0};
+  const double drr_step = (kMaxRoomDrrDb - kMinRoomDrrDb) / (coarse_only ? 5.0 : 7.0);
+  for (double lt : log_rt60s)
+    for (double drr = kMinRoomDrrDb; drr <= kMaxRoomDrrDb + 1e-9; drr += drr_step) {
+      const Rates k = rates_of(log_rt60_curve(lt, 0.0, 0.0));
+      table.push_back(objective.strike_gaps(k, room_sigma2(k, drr, fs)));
+      double gap = 0.0;
+      for (double v : table.back()) gap += v;
+      gap /= double(std::max<std::size_t>(table.back().size(), 1));
+      if (gap < best) { best = gap; lt_best = lt; drr_best = drr; }
+    }
+  // 2. The curve's three coefficients and the level, twice: each time from renderings with the dry
+  // amplitudes of the room found so far (the closed-form corrections stay small).
+  std::array<double, 4> p{lt_best, 0.0, 0.0, std::log(room_sigma2(rates_of(log_rt60_curve(lt_best, 0.0, 0.0)), drr_best, fs))};
+  const auto room_of = [&](const std::array<double, 4>& q) {
+    Room room;
+    room.enabled = true;
+    const auto lt = log_rt60_curve(q[0], q[1], q[2]);
+    for (std::size_t b = 0; b < kRoomBands; ++b) room.rt60_s.push_back(std::exp(lt[b]));
+    room.drr_db = room_drr_db({rates_of(lt), std::exp(q[3])}, fs);
+    return room;
+  };
+  const auto gap_of = [&](const std::vector<double>& q) {
+    return objective.gap(rates_of(log_rt60_curve(q[0], q[1], q[2])), std::exp(q[3]));
+  };
+  BoxedSearchOptions search;
+  search.lower = {std::log(kMinRoomRt60S), -3.0, -3.0, p[3] - 12.0};
+  search.upper = {std::log(kMaxRoomRt60S), 3.0, 3.0, p[3] + 12.0};
+  search.step = {0.3, 0.3, 0.3, 0.7};
+  RoomFit fit;
+  fit.grid_cv_gap_db = leave_one_out_gap(table);
+  for (std::size_t b = 0; b < kRoomBands; ++b) fit.band_measured.push_back(objective.heard(b));
+  if (coarse_only) {
+    fit.room = room_of(p);
+    fit.gap_db = best;
+    return fit;
+  }
+  for (std::size_t evaluations : {70, 25}) {
+    const Room current = room_of(p);
+    objective.rebase(&current);
+    search.max_evaluations = evaluations;
+    const BoxedSearchResult found = nelder_mead_boxed(gap_of, {p.begin(), p.end()}, search);
+    std::copy(found.x.begin(), found.x.end(), p.begin());
+    best = found.value;
+  }
+  fit.room = room_of(p);
+  fit.gap_db = best;
+  return fit;
+}
+
+std::vector<double> read_mode_amplitudes(const AuditData& data, const AuditModel& without, const Room& room,
+                                         const std::vector<std::size_t>& strikes, const std::vector<bool>& may_drop) {
+  RoomObjective objective(data, without, strikes, &room);
+  const RoomRates rates = room_rates(room, objective.sample_rate());
+  return objective.read_amplitudes(rates.k_per_sample, rates.sigma2, may_drop);
+}
+
+}  // namespace ms::audit

@@ -1,0 +1,39 @@
+// Fit of a room (synthesis/room_response's effects.room) to the recordings: the RT60 of each octave
+// band and the direct-to-reverberant ratio that minimise the mean gap over the given strikes, a room
+// answering every strike alike. The model's modes are rendered once; the room's expected power is
+// added in closed form (room_power.hpp) for each candidate.
+#pragma once
+#include <cstddef>
+#include <vector>
+
+#include "analysis/audit/audit_model.hpp"
+#include "synthesis/room_response.hpp"
+
+namespace ms::audit {
+
+constexpr double kMinRoomRt60S = 0.1, kMaxRoomRt60S = 3.0;
+constexpr double kMinRoomDrrDb = -15.0, kMaxRoomDrrDb = 30.0;
+
+struct RoomFit {
+  Room room;                           // rt60_s per octave band, drr_db (enabled)
+  std::vector<bool> band_measured;     // false: no mode in the band (its RT60 is the curve's)
+  double gap_db = 0.0;                 // mean gap over the strikes with the room
+  double grid_cv_gap_db = 0.0;         // leave-one-strike-out gap of the coarse grid (grid_cross_validation.hpp)
+};
+
+// `without` must not contain a room. Coarse: one RT60 for every band and the DRR on a grid; then log
+// RT60 as a quadratic over the octave bands and the reverberant level by Nelder-Mead (rooms' RT60s
+// vary smoothly with frequency, and a band whose modes all outlast the room barely moves the gap).
+// coarse_only: the grid's room (one RT60 for every band), for quick comparisons.
+RoomFit fit_room(const AuditData& data, const AuditModel& without, const std::vector<std::size_t>& strikes,
+                 bool coarse_only = false);
+
+// With `room` in the model, each mode's amplitude read again from the strikes' spectrograms, one mode
+// after another (in a room the extraction's amplitude of a mode also holds parts of its reverberation
+// and its neighbours', and some tracks are the room's answer to a stronger mode): the factor on the
+// mode's dry amplitude in [0.1, 3] that lowers the mean gap most, or 0 where leaving it out does better
+// and may_drop[n] allows it.
+std::vector<double> read_mode_amplitudes(const AuditData& data, const AuditModel& without, const Room& room,
+                                         const std::vector<std::size_t>& strikes, const std::vector<bool>& may_drop);
+
+}  // namespace ms::audit
