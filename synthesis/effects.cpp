@@ -82,48 +82,71 @@ void add_background_noise(std::vector<float>& samples, const BackgroundNoise& no
   for (float& v : samples) v = float(v + gauss(rng));
 }
 
+std::size_t hold_samples(double hold_s, double sample_rate_hz) {
+  return hold_s > 0.0 ? std::size_t(std::lround(hold_s * sample_rate_hz)) : 0;
+}
+
 double decaying_noise_variance(double direct_energy, double sample_rate_hz, std::size_t n, double t60_s,
-                               double energy_db) {
-  // sum_t exp(-2 k t) in closed form (geometric series), k = ln(1000) / t60 per sample.
+                               double energy_db, double hold_s) {
+  // The held samples, then sum_t exp(-2 k t) in closed form (geometric series), k = ln(1000) / t60 per sample.
+  const std::size_t held = std::min(hold_samples(hold_s, sample_rate_hz), n);
   const double r = std::exp(-2.0 * std::log(1000.0) / (t60_s * sample_rate_hz));
-  const double envelope_energy = (1.0 - std::pow(r, double(n))) / (1.0 - r);
+  const double envelope_energy = double(held) + (1.0 - std::pow(r, double(n - held))) / (1.0 - r);
   return direct_energy * std::pow(10.0, energy_db / 10.0) / std::max(envelope_energy, 1e-300);
 }
 
+double noise_envelope(std::size_t i, std::size_t held, double decay_per_sample) {
+  return i < held ? 1.0 : std::exp(-decay_per_sample * double(i - held));
+}
+
 void add_decaying_noise(std::vector<float>& samples, double sample_rate_hz, double t60_s, double energy_db,
-                        std::uint64_t seed) {
+                        std::uint64_t seed, double hold_s) {
   if (samples.empty() || t60_s <= 0) return;
   double energy = 0.0;
   for (float v : samples) energy += double(v) * v;
-  const double sigma0 = std::sqrt(decaying_noise_variance(energy, sample_rate_hz, samples.size(), t60_s, energy_db));
+  const double sigma0 =
+      std::sqrt(decaying_noise_variance(energy, sample_rate_hz, samples.size(), t60_s, energy_db, hold_s));
   const double k = std::log(1000.0) / (t60_s * sample_rate_hz);
+  const std::size_t held = hold_samples(hold_s, sample_rate_hz);
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> gauss(0.0, 1.0);
   for (std::size_t i = 0; i < samples.size(); ++i) {
-    const double env = sigma0 * std::exp(-k * double(i));
+    const double env = sigma0 * noise_envelope(i, held, k);
     if (env < 1e-12 * sigma0) break;  // 240 dB down: nothing left to add
     samples[i] = float(samples[i] + env * gauss(rng));
   }
 }
 
+double burst_band_gain2(double freq_hz, double low_hz, double high_hz) {
+  if (high_hz <= 0.0) return 1.0;
+  const double high = 1.0 / (1.0 + std::pow(freq_hz / high_hz, 8.0));
+  return low_hz > 0.0 ? high / (1.0 + std::pow(low_hz / std::max(freq_hz, 1e-9 * low_hz), 8.0)) : high;
+}
+
 double band_power_share(double low_hz, double high_hz, double sample_rate_hz) {
   if (high_hz <= 0.0) return 1.0;
+  // The mean of |H|^2 from 0 to Nyquist (midpoint rule on 8192 points: the edges span hundreds).
+  constexpr int kPoints = 8192;
   const double nyquist = 0.5 * sample_rate_hz;
-  return std::max(std::min(high_hz, nyquist) - std::max(low_hz, 0.0), 1e-9 * nyquist) / nyquist;
+  double sum = 0.0;
+  for (int i = 0; i < kPoints; ++i) sum += burst_band_gain2((i + 0.5) * nyquist / kPoints, low_hz, high_hz);
+  return std::max(sum / kPoints, 1e-12);
 }
 
 namespace {
 
-// The burst's noise band-limited: stationary white noise cut to [low, high] (circularly: it has no
-// onset to ring before), scaled to unit variance, then given add_decaying_noise's envelope. Its power
-// spectrum is the band's, blurred by the envelope's own width (1 / the decay time).
+// The burst's noise band-limited: stationary white noise shaped by the band's |H| (circularly: it has
+// no onset to ring before), scaled to unit variance, then given add_decaying_noise's envelope. Its power
+// spectrum is |H|^2, blurred by the envelope's own width (1 / the decay time).
 void add_band_limited_burst(std::vector<float>& samples, const std::vector<float>& direct, double sample_rate_hz,
                             const AttackTransient& t) {
-  const double t60_s = 1e-3 * t.duration_ms;
-  const std::size_t span = std::min(direct.size(), std::size_t(4.0 * t60_s * sample_rate_hz) + 1);  // 240 dB down
+  const double t60_s = 1e-3 * t.duration_ms, hold_s = 1e-3 * t.hold_ms;
+  const std::size_t held = hold_samples(hold_s, sample_rate_hz);
+  const std::size_t span = std::min(direct.size(), held + std::size_t(4.0 * t60_s * sample_rate_hz) + 1);  // 240 dB down
   double energy = 0.0;
   for (float v : direct) energy += double(v) * v;
-  const double sigma0 = std::sqrt(decaying_noise_variance(energy, sample_rate_hz, direct.size(), t60_s, t.level_db));
+  const double sigma0 =
+      std::sqrt(decaying_noise_variance(energy, sample_rate_hz, direct.size(), t60_s, t.level_db, hold_s));
   const double k = std::log(1000.0) / (t60_s * sample_rate_hz);
   std::mt19937_64 rng(t.seed);
   std::normal_distribution<double> gauss(0.0, 1.0);
@@ -132,16 +155,16 @@ void add_band_limited_burst(std::vector<float>& samples, const std::vector<float
   for (std::size_t i = 0; i < n; ++i) fft.real()[i] = gauss(rng);
   fft.forward();
   const double bin_hz = sample_rate_hz / double(n);
-  std::size_t kept = 0;
+  double kept = 0.0;  // the variance the shaping keeps, in bins
   for (std::size_t b = 0; b <= n / 2; ++b) {
-    const double f = double(b) * bin_hz;
-    if (f < t.low_hz || f > t.high_hz) fft.spectrum()[b] = 0.0;
-    else kept += b == 0 || 2 * b == n ? 1 : 2;  // the bins' share of the variance
+    const double h2 = burst_band_gain2(double(b) * bin_hz, t.low_hz, t.high_hz);
+    fft.spectrum()[b] *= std::sqrt(h2);
+    kept += (b == 0 || 2 * b == n ? 1.0 : 2.0) * h2;
   }
   fft.backward();
-  const double unit = 1.0 / (double(n) * std::sqrt(std::max<double>(double(kept), 1.0) / double(n)));
+  const double unit = 1.0 / (double(n) * std::sqrt(std::max(kept, 1e-12) / double(n)));
   for (std::size_t i = 0; i < samples.size() && i < span; ++i)
-    samples[i] = float(samples[i] + sigma0 * std::exp(-k * double(i)) * fft.real()[i] * unit);
+    samples[i] = float(samples[i] + sigma0 * noise_envelope(i, held, k) * fft.real()[i] * unit);
 }
 
 }  // namespace
@@ -158,7 +181,8 @@ void add_reverb_and_transient(std::vector<float>& samples, double sample_rate_hz
     add_band_limited_burst(samples, direct, sample_rate_hz, transient);
   } else if (transient.enabled) {
     std::vector<float> burst(direct);
-    add_decaying_noise(burst, sample_rate_hz, 1e-3 * transient.duration_ms, transient.level_db, transient.seed);
+    add_decaying_noise(burst, sample_rate_hz, 1e-3 * transient.duration_ms, transient.level_db, transient.seed,
+                       1e-3 * transient.hold_ms);
     for (std::size_t i = 0; i < samples.size(); ++i) samples[i] += burst[i] - direct[i];
   }
 }

@@ -71,23 +71,35 @@ struct AttackTransient {
   double duration_ms = 0.0;  // burst decays 60 dB in this time
   std::uint64_t seed = 0;
   bool enabled = false;
-  // The burst's band (a stick's click rings in the striker's own band): both 0 = white. Inside
-  // [low_hz, high_hz] its spectrum is flat; the level stays the burst's whole energy.
+  // The burst's band (a stick's click rings in the striker's own band): both 0 = white. Its power
+  // spectrum is burst_band_gain2: flat inside, falling 24 dB per octave past each edge (a 4th-order
+  // Butterworth's magnitude; -3 dB at the edges); the level stays the burst's whole energy.
   double low_hz = 0.0, high_hz = 0.0;
   bool band_limited() const { return high_hz > 0.0; }
+  // A burst that lasts (a rattle, a scrape) holds its level this long before it decays.
+  double hold_ms = 0.0;
 };
 
-// White Gaussian noise with standard deviation sigma0 exp(-ln(1000) t / t60_s) from sample 0, sigma0
-// chosen so its expected energy is energy_db relative to sum(samples^2) as given (seeded).
+// White Gaussian noise with standard deviation sigma0 from sample 0 for hold_s, then sigma0
+// exp(-ln(1000) t / t60_s) from there, sigma0 chosen so its expected energy is energy_db relative to
+// sum(samples^2) as given (seeded).
 void add_decaying_noise(std::vector<float>& samples, double sample_rate_hz, double t60_s, double energy_db,
-                        std::uint64_t seed);
+                        std::uint64_t seed, double hold_s = 0.0);
 
 // sigma0^2 of add_decaying_noise for a direct sound of energy sum(x^2) = direct_energy over n samples.
 double decaying_noise_variance(double direct_energy, double sample_rate_hz, std::size_t n, double t60_s,
-                               double energy_db);
+                               double energy_db, double hold_s = 0.0);
 
-// Share of a white noise's power that a band [low_hz, high_hz] keeps (1 for white): the burst's
-// variance is divided by it, so that its energy stays level_db whatever its band.
+// The held samples of a hold (rounded to the sample) and the envelope sample i has (1 while held).
+std::size_t hold_samples(double hold_s, double sample_rate_hz);
+double noise_envelope(std::size_t i, std::size_t held, double decay_per_sample);
+
+// |H(f)|^2 of a burst's band: 1 / (1 + (f / high)^8) / (1 + (low / f)^8) (no low edge when low is 0;
+// 1 for white, high 0).
+double burst_band_gain2(double freq_hz, double low_hz, double high_hz);
+
+// Share of a white noise's power that a band keeps (the mean of |H|^2 up to Nyquist; 1 for white):
+// the burst's variance is divided by it, so that its energy stays level_db whatever its band.
 double band_power_share(double low_hz, double high_hz, double sample_rate_hz);
 
 // Both relative to the direct sound `samples` holds when called (neither sees the other's noise).

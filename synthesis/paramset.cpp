@@ -348,6 +348,7 @@ std::string canonical_recipe(const ParamSet& p) {
         (unsigned long long)p.transient.seed);
   if (p.transient.enabled && p.transient.band_limited())
     add("transient_band %.17g %.17g\n", p.transient.low_hz, p.transient.high_hz);
+  if (p.transient.enabled && p.transient.hold_ms > 0.0) add("transient_hold %.17g\n", p.transient.hold_ms);
   if (p.residual.spectrogram)
     add("residual %s %.17g %llu\n", p.residual.sha256.c_str(), p.residual.gain_db, (unsigned long long)p.residual.seed);
   if (p.renderer == Renderer::bandpass) {

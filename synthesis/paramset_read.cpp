@@ -270,7 +270,7 @@ void RecipeReader::effects(const YAML::Node& fx) const {
     out.reverb.enabled = true;
   }
   if (const YAML::Node n = fx["transient"]) {
-    r.check_keys(n, "effects.transient", {"level_db", "duration_ms", "seed", "band_hz"});
+    r.check_keys(n, "effects.transient", {"level_db", "duration_ms", "seed", "band_hz", "hold_ms"});
     needs(n, "effects.transient", {"level_db", "duration_ms"});
     out.transient.level_db = within(n["level_db"], "effects.transient.level_db", -120, 20, "[-120, 20] dB");
     out.transient.duration_ms = r.positive(n["duration_ms"], "effects.transient.duration_ms");
@@ -284,6 +284,7 @@ void RecipeReader::effects(const YAML::Node& fx) const {
       out.transient.low_hz = edges[0];
       out.transient.high_hz = edges[1];
     }
+    if (n["hold_ms"]) out.transient.hold_ms = within(n["hold_ms"], "effects.transient.hold_ms", 0, 50, "[0, 50] ms");
     out.transient.enabled = true;
   }
   if (const YAML::Node n = fx["noise"]) {

@@ -179,11 +179,12 @@ void RecipeWriter::effects(const ParamSetRecipe& r) {
   }
   if (r.reverb.enabled)
     seeded_noise("reverb", {{"rt60_s", r.reverb.rt60_s}, {"level_db", r.reverb.level_db}}, r.reverb.seed);
-  if (r.transient.enabled && r.transient.band_limited()) {
+  if (r.transient.enabled && (r.transient.band_limited() || r.transient.hold_ms > 0.0)) {
     begin_flow("transient");
     number("level_db", r.transient.level_db);
     number("duration_ms", r.transient.duration_ms);
-    numbers("band_hz", {r.transient.low_hz, r.transient.high_hz});
+    if (r.transient.band_limited()) numbers("band_hz", {r.transient.low_hz, r.transient.high_hz});
+    if (r.transient.hold_ms > 0.0) number("hold_ms", r.transient.hold_ms);
     seed(r.transient.seed);
     end();
   } else if (r.transient.enabled) {

@@ -71,22 +71,34 @@ ModalModel strike_model(const AuditModel& model, std::size_t s) {
 }
 
 void add_decaying_noise_power(BarkSpectrogram& spec, const SpectrogramGrid& g, double direct_energy, double t60_s,
-                              double energy_db, const std::vector<double>* bins_per_band) {
+                              double energy_db, const std::vector<double>* bins_per_band, double hold_s) {
   if (t60_s <= 0.0) return;
   // The noise's energy is relative to the direct sound over the whole strike, as synthesis adds it.
-  const double var0 = decaying_noise_variance(direct_energy, g.sample_rate_hz, g.samples, t60_s, energy_db);
-  // Per bin, white noise of variance v_i gives E|X|^2 = sum_i w_i^2 v_i; v_i falls by r per sample.
+  const double var0 = decaying_noise_variance(direct_energy, g.sample_rate_hz, g.samples, t60_s, energy_db, hold_s);
+  // Per bin, white noise of variance v_i gives E|X|^2 = sum_i w_i^2 v_i; v_i is var0 while held, then
+  // falls by r per sample.
   const double r = std::exp(-2.0 * std::log(1000.0) / (t60_s * g.sample_rate_hz));
+  const std::size_t held = hold_samples(hold_s, g.sample_rate_hz);
+  std::vector<double> w2(g.window);
   double frame0 = 0.0, ri = 1.0;
   for (std::size_t i = 0; i < g.window; ++i, ri *= r) {
     const double w = 0.5 - 0.5 * std::cos(2.0 * std::numbers::pi * double(i) / double(g.window));
-    frame0 += w * w * ri;
+    w2[i] = w * w;
+    frame0 += w2[i] * ri;
   }
-  const double per_hop = std::pow(r, double(g.hop));
-  double level = var0 * frame0;
-  for (std::size_t f = 0; f < spec.frames && level > 0.0; ++f, level *= per_hop)
+  for (std::size_t f = 0; f < spec.frames; ++f) {
+    const std::size_t t0 = f * g.hop;
+    double level = 0.0;
+    if (t0 >= held) {
+      level = var0 * std::pow(r, double(t0 - held)) * frame0;
+    } else {  // the frame meets the hold: its samples one by one
+      for (std::size_t i = 0; i < g.window; ++i)
+        level += w2[i] * var0 * (t0 + i < held ? 1.0 : std::pow(r, double(t0 + i - held)));
+    }
+    if (!(level > 1e-30 * var0)) break;
     for (std::size_t b = 0; b < spec.bands; ++b)
       spec.at(f, b) += level * (bins_per_band ? (*bins_per_band)[b] : double(g.band_bins[b]));
+  }
 }
 
 std::vector<double> burst_bins_per_band(const SpectrogramGrid& g, double low_hz, double high_hz) {
@@ -94,7 +106,7 @@ std::vector<double> burst_bins_per_band(const SpectrogramGrid& g, double low_hz,
   const double share = band_power_share(low_hz, high_hz, g.sample_rate_hz);
   for (std::size_t k = 1; k < g.bin_band.size(); ++k) {
     const double f = double(k) * g.sample_rate_hz / double(g.window);
-    if (g.bin_band[k] >= 0 && f >= low_hz && f <= high_hz) bins[std::size_t(g.bin_band[k])] += 1.0 / share;
+    if (g.bin_band[k] >= 0) bins[std::size_t(g.bin_band[k])] += burst_band_gain2(f, low_hz, high_hz) / share;
   }
   return bins;
 }
@@ -143,10 +155,10 @@ Spectra predict_spectra(const AuditModel& model, const AuditData& data, std::siz
     if (model.transient.enabled && model.transient.band_limited()) {
       const std::vector<double> bins = burst_bins_per_band(ms_.grids[r], model.transient.low_hz, model.transient.high_hz);
       add_decaying_noise_power(spec[r], ms_.grids[r], energy, 1e-3 * model.transient.duration_ms,
-                               model.transient.level_db, &bins);
+                               model.transient.level_db, &bins, 1e-3 * model.transient.hold_ms);
     } else if (model.transient.enabled) {
       add_decaying_noise_power(spec[r], ms_.grids[r], energy, 1e-3 * model.transient.duration_ms,
-                               model.transient.level_db);
+                               model.transient.level_db, nullptr, 1e-3 * model.transient.hold_ms);
     }
     add_band_noise_power(spec[r], ms_.grids[r], model.noise_band_variance);
   }

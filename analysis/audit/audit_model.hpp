@@ -97,13 +97,14 @@ Spectra predict_spectra(const AuditModel& model, const AuditData& data, std::siz
 void add_band_noise_power(BarkSpectrogram& spec, const SpectrogramGrid& grid, const std::vector<double>& variance);
 
 // Adds the expected band power of synthesis/effects' decaying noise (t60_s, energy_db relative to a
-// direct sound of energy direct_energy) to a spectrogram on `grid` (noise starting at sample 0). White
-// noise fills each band's bins; a band-limited burst only bins_per_band[b] of them, at a density raised
-// by its band's share (burst_bins_per_band).
+// direct sound of energy direct_energy) to a spectrogram on `grid` (noise starting at sample 0, held
+// for hold_s). White noise fills each band's bins; a band-limited burst only bins_per_band[b] of them,
+// at a density raised by its band's share (burst_bins_per_band).
 void add_decaying_noise_power(BarkSpectrogram& spec, const SpectrogramGrid& grid, double direct_energy,
-                              double t60_s, double energy_db, const std::vector<double>* bins_per_band = nullptr);
+                              double t60_s, double energy_db, const std::vector<double>* bins_per_band = nullptr,
+                              double hold_s = 0.0);
 
-// Per Bark band of `grid`: its bins inside [low_hz, high_hz], each weighted 1 / band_power_share.
+// Per Bark band of `grid`: its bins, each weighted by the band's |H|^2 / band_power_share.
 std::vector<double> burst_bins_per_band(const SpectrogramGrid& grid, double low_hz, double high_hz);
 
 // Gap of strike s between the model and the measurement.

@@ -60,7 +60,7 @@ ParamSetRecipe augmented_recipe(const AuditData& data, const AuditModel& model, 
       amp *= m.room_gain *
              std::sqrt(dry_power_scale(rates, room_octave_band(m.freq_hz), (m.decay_per_s + e) / recipe.sample_rate_hz));
     auto emit = [&](double f, double a) {
-      recipe.modes.push_back({f, m.decay_per_s, a, 0.0});
+      recipe.modes.push_back({f, m.decay_per_s, a, m.phase_rad});  // its onset phase: the beats come out as measured
       extra.push_back(e);
     };
     if (const Doublets& db = m.doublet; db.split_hz > 0.0) {

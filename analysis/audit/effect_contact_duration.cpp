@@ -78,16 +78,15 @@ void extend(const AuditData& data, AuditModel& model, const std::vector<std::siz
   // effect is a contact that shortens as the strike hardens; one the same for every strike is a fixed
   // filter the mode shapes absorb, and fitting it (p = 0) only lets the contact's zeros chase the
   // residuals of other effects (a real ride bell, once support damping was named, went to 4 ms).
-  // Every pulse shape over every other duration of the grid, then the best shape's neighbours: the
+  // Every pulse shape over every other duration of the grid, then its best one's neighbours: the
   // shapes' side lobes fall at different rates (1/f^3 raised cosine, 1/f^2 half-sine), so a long
   // contact of one shape is often no better than none in another's.
   const AuditModel start = model;
   const std::vector<double> taus = tau_grid();
   struct Best {
     double ss = 1e300, tau = 0.0, p = 0.0;
-    PulseShape shape = PulseShape::raised_cosine;
-  } best;
-  const auto search = [&](PulseShape shape, std::size_t from, std::size_t to, std::size_t step) {
+  };
+  const auto search = [&](PulseShape shape, Best& best, std::size_t from, std::size_t to, std::size_t step) {
     for (std::size_t i = from; i <= to && i < taus.size(); i += step)
       for (int k = 1; k <= 10; ++k) {
         AuditModel trial = start;
@@ -95,18 +94,30 @@ void extend(const AuditData& data, AuditModel& model, const std::vector<std::siz
         trial.contact_s.assign(data.strike_count(), 0.0);
         trial.contact_gain_ref = gref;
         const double ss = fit_at(data, trial, train, taus[i], 0.1 * k);
-        if (ss < best.ss - 1e-12) best = {ss, taus[i], 0.1 * k, shape};
+        if (ss < best.ss - 1e-12) best = {ss, taus[i], 0.1 * k};
         if (taus[i] == 0.0) break;  // p is irrelevant for an impulse
       }
   };
-  for (PulseShape shape : {PulseShape::raised_cosine, PulseShape::half_sine, PulseShape::hertz})
-    search(shape, 0, taus.size() - 1, 2);
-  if (best.tau > 0.0) {
-    const std::size_t at = std::size_t(std::find(taus.begin(), taus.end(), best.tau) - taus.begin());
-    search(best.shape, at - 1, at + 1, 2);
+  // Each shape's law by the mode amplitudes; between the shapes, the training strikes' gap decides
+  // (amplitudes of modes near a pulse's spectral zeros are what the extraction reads worst).
+  double best_gap = 1e300;
+  for (PulseShape shape : {PulseShape::raised_cosine, PulseShape::half_sine, PulseShape::hertz}) {
+    Best best;
+    search(shape, best, 0, taus.size() - 1, 2);
+    if (best.tau > 0.0) {
+      const std::size_t at = std::size_t(std::find(taus.begin(), taus.end(), best.tau) - taus.begin());
+      search(shape, best, at - 1, at + 1, 2);
+    }
+    AuditModel trial = start;
+    trial.contact_shape = shape;
+    trial.contact_s.assign(data.strike_count(), 0.0);
+    trial.contact_gain_ref = gref;
+    fit_at(data, trial, train, best.tau, best.p);
+    if (const double gap = mean_gap(trial, data, train); gap < best_gap) {
+      best_gap = gap;
+      model = std::move(trial);
+    }
   }
-  model.contact_shape = best.shape;
-  fit_at(data, model, train, best.tau, best.p);
 }
 
 // A held-out strike: its contact follows from its gain through the fitted law.

@@ -159,37 +159,45 @@ TEST(ReverbAndTransient, ParameterSetKeysRenderChangeTheHashAndFailWithLocation)
 }
 
 TEST(ReverbAndTransient, ABandLimitedBurstKeepsItsEnergyInItsBand) {
-  // A striker's click in 1-4 kHz: its energy relative to the direct sound as asked (mean of 16 seeds),
-  // all but a trace of it inside the band (the spectrum of its first 50 ms by a direct DFT; the
-  // envelope blurs the edges by ~1 / the decay time), nothing after 240 dB of decay, and the same seed
-  // gives the same samples.
+  // A striker's click in 1-4 kHz (held 40 ms so that its spectrum is the band's): its energy relative to
+  // the direct sound as asked (mean of 16 seeds), its power spectrum |H|^2 (half the mid-band density at
+  // each -3 dB edge, under 2 % of the energy outside 0.5-8 kHz; by a direct DFT of its first 40 ms),
+  // nothing after 240 dB of decay, and the same seed gives the same samples.
   const double fs = 44100.0;
   std::vector<float> y(std::size_t(0.5 * fs));
   for (std::size_t n = 0; n < y.size(); ++n) y[n] = float(0.5 * std::exp(-3.0 * n / fs) * std::sin(2 * std::numbers::pi * 440.0 * n / fs));
-  double level_sum = 0.0;
+  double level_sum = 0.0, outside = 0.0, total = 0.0, at_low = 0.0, at_high = 0.0, mid = 0.0;
+  const std::size_t n = std::size_t(0.04 * fs);
   for (std::uint64_t seed = 1; seed <= 16; ++seed) {
-    AttackTransient t{-12.0, 80.0, seed, true};
+    AttackTransient t{-12.0, 20.0, seed, true};
     t.low_hz = 1000.0;
     t.high_hz = 4000.0;
+    t.hold_ms = 40.0;
     std::vector<float> a = y, b = y;
     add_reverb_and_transient(a, fs, Reverb{}, t);
     add_reverb_and_transient(b, fs, Reverb{}, t);
     ASSERT_EQ(a, b);
     const std::vector<float> burst = difference(a, y);
     level_sum += 10 * std::log10(energy_of(burst, 0, burst.size()) / energy_of(y, 0, y.size()));
-    const std::size_t n = std::size_t(0.05 * fs);
-    double inside = 0.0, outside = 0.0;
     for (std::size_t k = 1; k < n / 2; ++k) {
       std::complex<double> x = 0.0;
       for (std::size_t i = 0; i < n; ++i) x += double(burst[i]) * std::polar(1.0, -2.0 * std::numbers::pi * double(k * i) / double(n));
-      const double f = double(k) * fs / double(n);
-      (f >= 800.0 && f <= 4200.0 ? inside : outside) += std::norm(x);
+      const double f = double(k) * fs / double(n), p = std::norm(x);
+      total += p;
+      if (f < 500.0 || f > 8000.0) outside += p;
+      if (std::abs(f - 1000.0) < 80.0) at_low += p;
+      if (std::abs(f - 4000.0) < 80.0) at_high += p;
+      if (std::abs(f - 2000.0) < 80.0) mid += p;
     }
-    EXPECT_LT(outside, 0.06 * inside) << seed;  // 16 seeds: 0.03-3.2 %, the onset's step and the window's cut
-    EXPECT_EQ(energy_of(burst, std::size_t(0.33 * fs), burst.size()), 0.0) << seed;  // 240 dB down by 4 x 80 ms
+    EXPECT_EQ(energy_of(burst, std::size_t(0.3 * fs), burst.size()), 0.0) << seed;  // 40 ms + 240 dB by 4 x 20 ms
   }
-  EXPECT_NEAR(level_sum / 16.0, -12.0, 0.6);
-  EXPECT_NEAR(band_power_share(1000.0, 4000.0, fs), 3000.0 / 22050.0, 1e-12);
+  EXPECT_NEAR(level_sum / 16.0, -12.0, 0.5);
+  EXPECT_LT(outside, 0.02 * total);
+  EXPECT_NEAR(at_low / mid, 0.5, 0.15);
+  EXPECT_NEAR(at_high / mid, 0.5, 0.15);
+  EXPECT_NEAR(burst_band_gain2(1000.0, 1000.0, 4000.0), 0.5, 0.01);
+  EXPECT_NEAR(burst_band_gain2(8000.0, 1000.0, 4000.0), 1.0 / 257.0, 1e-6);  // 24 dB per octave
+  EXPECT_NEAR(band_power_share(0.0, 11025.0, fs), 0.5 * 1.0, 0.02);           // half the band, softly
   EXPECT_EQ(band_power_share(0.0, 0.0, fs), 1.0);
 }
 
@@ -215,5 +223,45 @@ TEST(ReverbAndTransient, TheBurstsBandIsReadWrittenAndHashedOnlyWhenGiven) {
       EXPECT_NE(std::string(e.what()).find("r.yaml:4:"), std::string::npos) << e.what();
       EXPECT_NE(std::string(e.what()).find("band_hz"), std::string::npos) << e.what();
     }
+  }
+}
+
+TEST(ReverbAndTransient, AHeldBurstKeepsItsLevelForTheHoldThenDecays) {
+  // Held 20 ms, then 60 dB in 10 ms: the energy of [0, 10) ms equals that of [10, 20) ms (within the
+  // noise of 441 samples), [20, 30) ms holds 1 / (13.8 ln) of a held stretch, and the whole as asked.
+  const double fs = 44100.0;
+  std::vector<float> y(std::size_t(0.5 * fs));
+  for (std::size_t n = 0; n < y.size(); ++n) y[n] = float(0.5 * std::exp(-3.0 * n / fs) * std::sin(2 * std::numbers::pi * 440.0 * n / fs));
+  double level_sum = 0.0, first_sum = 0.0, second_sum = 0.0, decay_sum = 0.0;
+  const std::size_t ms10 = std::size_t(0.01 * fs);
+  for (std::uint64_t seed = 1; seed <= 16; ++seed) {
+    for (bool band : {false, true}) {
+      AttackTransient t{-12.0, 10.0, seed, true};
+      t.hold_ms = 20.0;
+      if (band) { t.low_hz = 1000.0; t.high_hz = 6000.0; }
+      std::vector<float> a = y;
+      add_reverb_and_transient(a, fs, Reverb{}, t);
+      const std::vector<float> burst = difference(a, y);
+      level_sum += 10 * std::log10(energy_of(burst, 0, burst.size()) / energy_of(y, 0, y.size()));
+      first_sum += energy_of(burst, 0, ms10);
+      second_sum += energy_of(burst, ms10, 2 * ms10);
+      decay_sum += energy_of(burst, 2 * ms10, 3 * ms10);
+    }
+  }
+  EXPECT_NEAR(level_sum / 32.0, -12.0, 0.4);
+  EXPECT_NEAR(first_sum / second_sum, 1.0, 0.1);
+  // 10 ms of e^{-2 k t}, k = ln(1000) / 10 ms: (1 - 1e-6) / (2 ln 1000) of a held 10 ms.
+  EXPECT_NEAR(decay_sum / second_sum, 1.0 / (2.0 * std::log(1000.0)), 0.02);
+  const std::string base = "duration_s: 1\nmodes: [{freq_hz: 440, decay_per_s: 1, amp: 1}]\nlevel: {normalize: none}\n";
+  const ParamSet held = parse_paramset(base + "effects: {transient: {level_db: -15, duration_ms: 4, hold_ms: 6, seed: 5}}\n", "r.yaml", ".");
+  EXPECT_EQ(held.transient.hold_ms, 6.0);
+  const std::string written = write_yaml(read_recipe(base + "effects: {transient: {level_db: -15, duration_ms: 4, hold_ms: 6, seed: 5}}\n", "r.yaml", "."));
+  EXPECT_NE(written.find("hold_ms: 6"), std::string::npos) << written;
+  EXPECT_EQ(parse_paramset(written, "w.yaml", ".").recipe_hash, held.recipe_hash);
+  try {
+    parse_paramset(base + "effects: {transient: {level_db: -15, duration_ms: 4, hold_ms: 80}}\n", "r.yaml", ".");
+    ADD_FAILURE() << "a hold of 80 ms";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("hold_ms"), std::string::npos) << e.what();
   }
 }
