@@ -141,18 +141,19 @@ TEST(AuditIndependent, DISABLED_Tuning) {
   EXPECT_GT(tally.clean, 0);
 }
 
-// Held-out seeds 41000-41219 (never used for tuning: not 1000-1179, 5000-12239, 40000-40999), strengths
+// Held-out seeds 43000-43219 (never used for tuning: not 1000-1179, 5000-13239, 40000-42999; 41000-41219
+// held out the audit before its room, band-limited bursts, contact shapes and onset phases), strengths
 // drawn from (0, 1), in two halves ctest runs side by side (each 110 cases, 10 of each effect alone,
 // 20 clean, 10 pairs; 6-8 min each on one core, most of it in the cases with a room): the audit must
 // meet the bars on each half. Disabled until the audit meets them (the room, hit_position and broader
 // contact and burst detectors are being built); INDEPENDENT_VERBOSE prints every case.
 TEST(AuditIndependent, DISABLED_HeldOutSeedsMeetTheBarsFirstHalf) {
-  Tally tally = run_cases(41000, 110, false, std::getenv("INDEPENDENT_VERBOSE") != nullptr);
+  Tally tally = run_cases(43000, 110, false, std::getenv("INDEPENDENT_VERBOSE") != nullptr);
   expect_bars(tally);
 }
 
 TEST(AuditIndependent, DISABLED_HeldOutSeedsMeetTheBarsSecondHalf) {
-  Tally tally = run_cases(41110, 110, false, std::getenv("INDEPENDENT_VERBOSE") != nullptr);
+  Tally tally = run_cases(43110, 110, false, std::getenv("INDEPENDENT_VERBOSE") != nullptr);
   expect_bars(tally);
 }
 
