@@ -143,10 +143,12 @@ TEST(AuditIndependent, DISABLED_Tuning) {
 
 // Held-out seeds 43000-43219 (never used for tuning: not 1000-1179, 5000-13239, 40000-42999; 41000-41219
 // held out the audit before its room, band-limited bursts, contact shapes and onset phases), strengths
-// drawn from (0, 1), in two halves ctest runs side by side (each 110 cases, 10 of each effect alone,
-// 20 clean, 10 pairs; 6-8 min each on one core, most of it in the cases with a room): the audit must
-// meet the bars on each half. Disabled until the audit meets them (the room, hit_position and broader
-// contact and burst detectors are being built); INDEPENDENT_VERBOSE prints every case.
+// drawn from (0, 1), in two halves (each 110 cases, 10 of each effect alone, 20 clean, 10 pairs; 8-10
+// min each on one core): the audit must meet the bars on each half. Disabled because it does not yet:
+// the one run on these seeds named contact_duration 24/28, hit_position 20/24, residual_transient
+// 19/24, reverberation 16/23 and halved the gap above the floor in 154/180 (README, "Held to a second,
+// independent generator"); INDEPENDENT_VERBOSE prints every case. Enable when a change meets the bars
+// on fresh seeds, not on these.
 TEST(AuditIndependent, DISABLED_HeldOutSeedsMeetTheBarsFirstHalf) {
   Tally tally = run_cases(43000, 110, false, std::getenv("INDEPENDENT_VERBOSE") != nullptr);
   expect_bars(tally);
