@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "analysis/audit/contact_spectrum.hpp"
 #include "analysis/audit/room_power.hpp"
@@ -79,13 +78,10 @@ void add_decaying_noise_power(BarkSpectrogram& spec, const SpectrogramGrid& g, d
   // falls by r per sample.
   const double r = std::exp(-2.0 * std::log(1000.0) / (t60_s * g.sample_rate_hz));
   const std::size_t held = hold_samples(hold_s, g.sample_rate_hz);
-  std::vector<double> w2(g.window);
+  // The burst and tail fits call this a few thousand times per audit: the window comes from the grid.
+  const std::vector<double>& w2 = g.window_squared;
   double frame0 = 0.0, ri = 1.0;
-  for (std::size_t i = 0; i < g.window; ++i, ri *= r) {
-    const double w = 0.5 - 0.5 * std::cos(2.0 * std::numbers::pi * double(i) / double(g.window));
-    w2[i] = w * w;
-    frame0 += w2[i] * ri;
-  }
+  for (std::size_t i = 0; i < g.window; ++i, ri *= r) frame0 += w2[i] * ri;
   for (std::size_t f = 0; f < spec.frames; ++f) {
     const std::size_t t0 = f * g.hop;
     double level = 0.0;

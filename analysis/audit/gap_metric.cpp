@@ -48,8 +48,10 @@ SpectrogramGrid make_grid(double fs, std::size_t samples, double window_s, std::
   g.band_bins.assign(g.bands, 0);
   for (std::size_t k = 1; k < bins; ++k) ++g.band_bins[std::size_t(g.bin_band[k])];
   g.window_energy = 0.0;
+  g.window_squared.resize(g.window);
   for (std::size_t i = 0; i < g.window; ++i) {
     const double w = 0.5 - 0.5 * std::cos(2.0 * std::numbers::pi * double(i) / double(g.window));
+    g.window_squared[i] = w * w;
     g.window_energy += w * w;
   }
   return g;

@@ -21,6 +21,7 @@ struct SpectrogramGrid {
   std::vector<int> bin_band;        // per rfft bin: its Bark band, -1 for DC
   std::vector<std::size_t> band_bins;  // number of bins per band
   double window_energy = 0.0;       // sum w^2 (white noise of variance s^2 gives s^2 * this per bin)
+  std::vector<double> window_squared;  // w_i^2 of the Hann window, per sample (noise models weigh by it)
   double frame_time_s(std::size_t frame) const;  // centre of a frame
   double band_centre_hz(std::size_t band) const;
 };

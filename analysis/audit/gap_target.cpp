@@ -20,22 +20,6 @@ GapTarget::GapTarget(const AuditData& data, const std::vector<std::size_t>& stri
     }
 }
 
-double quick_level_db(double p) {
-  // p = m 2^e, m in [1, 2), ln m = 2 (s + s^3/3 + ... + s^11/11) with s = (m - 1) / (m + 1) <= 1/3.
-  if (!(p > 0.0) || !std::isfinite(p)) return level_db(p);
-  std::uint64_t bits;
-  std::memcpy(&bits, &p, sizeof bits);
-  const int exponent = int((bits >> 52) & 0x7ff) - 1023;
-  if (exponent == -1023) return level_db(p);  // subnormal
-  bits = (bits & 0x000fffffffffffffULL) | 0x3ff0000000000000ULL;
-  double m;
-  std::memcpy(&m, &bits, sizeof m);
-  const double s = (m - 1.0) / (m + 1.0), s2 = s * s;
-  const double ln_m = 2.0 * s * (1.0 + s2 * (1.0 / 3 + s2 * (1.0 / 5 + s2 * (1.0 / 7 + s2 * (1.0 / 9 + s2 / 11)))));
-  constexpr double kDbPerLn = 4.342944819032518, kDbPerOctave = 3.0102999566398120;
-  return kDbPerLn * ln_m + kDbPerOctave * double(exponent);
-}
-
 double GapTarget::strike_gap(std::size_t i, const Spectra& model) const {
   double total = 0.0;
   std::size_t count = 0;

@@ -1,10 +1,9 @@
 #include "analysis/audit/strikes.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <exception>
-#include <thread>
+
+#include "analysis/audit/parallel_indices.hpp"
 
 namespace ms::audit {
 
@@ -24,27 +23,11 @@ MeasuredStrikes prepare_strikes(const std::vector<Recording>& recordings, const 
   std::size_t common = std::size_t(options.max_duration_s * out.sample_rate_hz);
   for (const Recording& r : recordings)
     if (auto problem = recording_problem(r.samples, r.sample_rate_hz)) throw AuditError(r.name + ": " + *problem);
-  // Each strike's extraction stands alone: they run on the machine's cores (FFTW's planner is locked in
-  // synthesis/fft; the results do not depend on the order).
+  // Each strike's extraction stands alone (FFTW's planner is locked in synthesis/fft).
   std::vector<ExtractedFeatures> features(recordings.size());
-  std::vector<std::exception_ptr> failed(recordings.size());
-  std::atomic<std::size_t> next{0};
-  const auto work = [&] {
-    for (std::size_t i; (i = next++) < recordings.size();) {
-      try {
-        features[i] = extract_features(recordings[i].samples, recordings[i].sample_rate_hz, extract);
-      } catch (...) {
-        failed[i] = std::current_exception();
-      }
-    }
-  };
-  const std::size_t threads = std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()), recordings.size());
-  std::vector<std::thread> pool;
-  for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(work);
-  work();
-  for (std::thread& t : pool) t.join();
-  for (const std::exception_ptr& e : failed)
-    if (e) std::rethrow_exception(e);
+  parallel_indices(recordings.size(), [&](std::size_t i) {
+    features[i] = extract_features(recordings[i].samples, recordings[i].sample_rate_hz, extract);
+  });
   for (std::size_t i = 0; i < recordings.size(); ++i) {
     const Recording& r = recordings[i];
     Strike s;
