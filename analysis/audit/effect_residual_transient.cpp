@@ -5,9 +5,10 @@
 // mode explains after the contact in most strikes (Strike::attack_noise_s). Both look at the
 // recordings, not the model: a model-relative statistic would see a room tail's early part as well.
 // Extension: a burst, white or in a band, held for a while or not (60 dB decay time, energy relative to
-// the direct sound, the band and the hold, fitted on the training strikes); it follows each strike's gain. It replaces any burst pseudo-modes left: tracks
-// the mode fit made of the burst's noise, which decay many times faster than the model's law and
-// which the plain model, putting every mode on the law, lets ring for the whole strike.
+// the direct sound, the band and the hold, fitted on the training strikes); it follows each strike's
+// gain. It replaces any burst pseudo-modes left: tracks the mode fit made of the burst's noise, which
+// decay many times faster than the model's law and which the plain model, putting every mode on the
+// law, lets ring for the whole strike.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

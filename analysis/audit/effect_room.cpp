@@ -216,32 +216,33 @@ std::string rt60_list(const Room& room) {
 }
 
 Detection detect(const AuditData& data, const AuditModel& current) {
-  AuditModel with = current;
-  extend(data, with, all_strikes(data));
-  const double before = mean_gap(current, data), after = mean_gap(with, data);
-  Detection d;
-  d.statistic = before - after;
-  d.passes = d.statistic >= kMinGapImprovementDb;
+  double after_db = 0.0;  // the extended model's gap, kept for the check below
+  const auto evidence = [&current, &after_db](const AuditModel& with, double before, double after) {
+    after_db = after;
+    char buf[400];
+    if (with.room.enabled)
+      std::snprintf(buf, sizeof buf,
+                    "the strikes ring on in a room (RT60 %s s over the octaves 125 Hz-8 kHz, DRR %.1f dB; %zu tracks "
+                    "were its answer to the modes' onsets); the room lowers the gap from %.2f to %.2f dB",
+                    rt60_list(with.room).c_str(), with.room.drr_db, current.modes.size() - with.modes.size(), before,
+                    after);
+    else
+      std::snprintf(buf, sizeof buf,
+                    "a tail common to all bands decays independently of the modes (RT60 %.2f s, %.1f dB re the direct "
+                    "sound; held-out strikes prefer it to a room); adding it lowers the gap from %.2f to %.2f dB",
+                    with.reverb.rt60_s, with.reverb.level_db, before, after);
+    return std::string(buf);
+  };
+  AuditModel with;
+  Detection d = detect_by_gap_improvement(data, current, extend, kMinGapImprovementDb, evidence, &with);
   // The room itself must explain something: with it silenced (its level 200 dB down) the tracks it
   // dropped and the amplitudes it read again stay, and can lower a gap where the tracks were off for
   // another reason (generated rooms: 0.10-0.72 dB).
   if (with.room.enabled) {
     AuditModel silent = with;
     silent.room.drr_db = 200.0;
-    d.passes = d.passes && mean_gap(silent, data) - after >= kMinRoomGainDb;
+    d.passes = d.passes && mean_gap(silent, data) - after_db >= kMinRoomGainDb;
   }
-  char buf[400];
-  if (with.room.enabled)
-    std::snprintf(buf, sizeof buf,
-                  "the strikes ring on in a room (RT60 %s s over the octaves 125 Hz-8 kHz, DRR %.1f dB; %zu tracks "
-                  "were its answer to the modes' onsets); the room lowers the gap from %.2f to %.2f dB",
-                  rt60_list(with.room).c_str(), with.room.drr_db, current.modes.size() - with.modes.size(), before, after);
-  else
-    std::snprintf(buf, sizeof buf,
-                  "a tail common to all bands decays independently of the modes (RT60 %.2f s, %.1f dB re the direct "
-                  "sound; held-out strikes prefer it to a room); adding it lowers the gap from %.2f to %.2f dB",
-                  with.reverb.rt60_s, with.reverb.level_db, before, after);
-  d.evidence = buf;
   return d;
 }
 

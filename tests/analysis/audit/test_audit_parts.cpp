@@ -16,6 +16,7 @@
 #include "synthesis/excitation.hpp"
 #include "synthesis/paramset.hpp"
 #include "synthesis/stimulus.hpp"
+#include "mean_spectra.hpp"
 
 namespace ms::audit {
 namespace {
@@ -147,21 +148,13 @@ TEST(AuditBaseline, ReverbAndTransientExtensionsRenderFromYaml) {
   EXPECT_NE(yaml.find("transient: {level_db: -15, duration_ms: 5, seed: 3}"), std::string::npos) << yaml;
   const std::size_t s = representative_strike(m);
   constexpr int kDraws = 8;
-  Spectra rendered{};
-  for (int seed = 1; seed <= kDraws; ++seed) {
-    std::string y = yaml;  // reverb and transient seeds 2 and 3 -> 2k and 2k + 1
+  const Spectra rendered = mean_spectra(kDraws, [&](int k) {
+    const int seed = k + 1;
+    std::string y = yaml;  // reverb and transient seeds 2 and 3 -> 2 seed and 2 seed + 1
     y.replace(y.find("seed: 2}"), 8, "seed: " + std::to_string(2 * seed) + "}");
     y.replace(y.find("seed: 3}"), 8, "seed: " + std::to_string(2 * seed + 1) + "}");
-    const Spectra one = bark_spectra(render_stimulus(parse_paramset(y, "model.yaml", ".")).audio.samples,
-                                     data.measured.grids);
-    for (std::size_t k = 0; k < kResolutions; ++k) {
-      if (seed == 1) rendered[k] = one[k];
-      else
-        for (std::size_t c = 0; c < one[k].power.size(); ++c) rendered[k].power[c] += one[k].power[c];
-    }
-  }
-  for (BarkSpectrogram& b : rendered)
-    for (double& p : b.power) p /= kDraws;
+    return bark_spectra(render_stimulus(parse_paramset(y, "model.yaml", ".")).audio.samples, data.measured.grids);
+  });
   const Spectra predicted = predict_spectra(m, data, s);
   for (std::size_t k = 0; k < kResolutions; ++k) {
     const GapSum g = gap_sum(predicted[k], rendered[k]);

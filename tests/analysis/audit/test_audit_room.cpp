@@ -16,6 +16,7 @@
 #include "analysis/audit/hidden_effect_generator.hpp"
 #include "analysis/audit/room_fit.hpp"
 #include "analysis/audit/room_power.hpp"
+#include "mean_spectra.hpp"
 #include "synthesis/effects.hpp"
 #include "synthesis/paramset.hpp"
 #include "synthesis/paramset_recipe.hpp"
@@ -32,23 +33,6 @@ Room log_linear_room(double rt60_125_s, double rt60_8k_s, double drr_db, std::ui
   for (std::size_t b = 0; b < kRoomBands; ++b)
     rt60_s.push_back(rt60_125_s * std::pow(rt60_8k_s / rt60_125_s, double(b) / double(kRoomBands - 1)));
   return Room{.rt60_s = rt60_s, .drr_db = drr_db, .seed = seed, .enabled = true};
-}
-
-// The mean power of spectrograms drawn one after another: draw(k) for k < draws.
-template <class Draw>
-Spectra mean_spectra(int draws, Draw draw) {
-  Spectra mean{};
-  for (int k = 0; k < draws; ++k) {
-    const Spectra one = draw(k);
-    for (std::size_t r = 0; r < kResolutions; ++r) {
-      if (k == 0) mean[r] = one[r];
-      else
-        for (std::size_t c = 0; c < one[r].power.size(); ++c) mean[r].power[c] += one[r].power[c];
-    }
-  }
-  for (BarkSpectrogram& b : mean)
-    for (double& p : b.power) p /= draws;
-  return mean;
 }
 
 // The mean over 24 rooms (seeds) of a dry rendering's Bark spectrograms, against the closed form: the
