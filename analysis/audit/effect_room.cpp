@@ -44,6 +44,9 @@ constexpr double kBuriedDb = 30.0, kStrongerDb = 6.0, kFarFromLaw = 6.0, kBelowL
 // The room is fitted on the loudest training strikes (most of its tail above the gap's floor), at
 // least kMinRoomStrikes of them.
 constexpr std::size_t kFitStrikes = 4, kMinRoomStrikes = 3;
+// The strong first guess of a room (mid-band RT60 and DRR of a reverberant lab), tried where the
+// grid's guess has a DRR above kWeakGuessDrrDb.
+constexpr double kStrongGuessRt60S = 0.6, kStrongGuessDrrDb = 0.0, kWeakGuessDrrDb = 6.0;
 
 // Median over the strikes of a track's decay and energy (amp^2 / 4d, per unit strike gain, dB).
 struct TrackLevel {
@@ -144,30 +147,53 @@ std::size_t drop_modes(const AuditData& data, AuditModel& model, const std::vect
   return dropped;
 }
 
-// The model in a room: the tracks the room made dropped (those the rule above names), the room fitted
-// coarsely, every mode's amplitude read again with it in the model (dropping the modes beside a
-// stronger one that the room's answer explains better), and the room fitted.
-AuditModel with_room(const AuditData& data, AuditModel roomed, const std::vector<std::size_t>& strikes,
-                     double* grid_cv_gap_db) {
-  drop_modes(data, roomed, room_made(data, roomed, strikes).made, strikes);
-  const Room coarse = fit_room(data, roomed, strikes, true).room;
-  // Every mode's amplitude read again (the extraction's amplitude of a mode in a room also holds parts
-  // of its reverberation and of its neighbours'); those beside a stronger one may go (they may be the
-  // room's answer to it).
+// The model in a room from a first guess of it: every mode's amplitude read again with that room in
+// the model (dropping the modes beside a stronger one that the room's answer explains better), then the
+// room fitted.
+AuditModel room_from(const AuditData& data, AuditModel roomed, const Room& guess, const std::vector<std::size_t>& strikes,
+                     RoomFit* fit) {
+  // The extraction's amplitude of a mode in a room also holds parts of its reverberation and of its
+  // neighbours'; those beside a stronger one may go (they may be the room's answer to it).
   const std::vector<double> stronger = room_made(data, roomed, strikes).stronger_db;
   std::vector<bool> may_drop(roomed.modes.size());
   for (std::size_t n = 0; n < may_drop.size(); ++n) may_drop[n] = stronger[n] > 0.0;
-  const std::vector<double> read = read_mode_amplitudes(data, roomed, coarse, strikes, may_drop);
+  const std::vector<double> read = read_mode_amplitudes(data, roomed, guess, strikes, may_drop);
   std::vector<bool> explained(read.size());
   for (std::size_t n = 0; n < read.size(); ++n) {
     explained[n] = read[n] == 0.0;
     roomed.modes[n].room_gain *= read[n];
   }
   drop_modes(data, roomed, explained, strikes);
-  const RoomFit fit = fit_room(data, roomed, strikes);
-  roomed.room = fit.room;
-  *grid_cv_gap_db = fit.grid_cv_gap_db;
+  *fit = fit_room(data, roomed, strikes);
+  roomed.room = fit->room;
   return roomed;
+}
+
+// The model in a room: the tracks the room made dropped (those the rule above names), then the room
+// from the coarse grid's room as first guess; where that is weak, also from a strong one, the better
+// kept (with the measured amplitudes, which hold each mode's reverberation, the grid can prefer a weak
+// room to the true strong one: the amplitudes must be read again in the strong room before it fits
+// better).
+AuditModel with_room(const AuditData& data, AuditModel roomed, const std::vector<std::size_t>& strikes,
+                     double* grid_cv_gap_db) {
+  drop_modes(data, roomed, room_made(data, roomed, strikes).made, strikes);
+  const Room grid = fit_room(data, roomed, strikes, true).room;
+  RoomFit fit;
+  AuditModel best = room_from(data, roomed, grid, strikes, &fit);
+  if (grid.drr_db > kWeakGuessDrrDb) {
+    Room strong;
+    strong.enabled = true;
+    strong.rt60_s.assign(kRoomOctaveCentresHz.size(), kStrongGuessRt60S);
+    strong.drr_db = kStrongGuessDrrDb;
+    RoomFit strong_fit;
+    AuditModel from_strong = room_from(data, roomed, strong, strikes, &strong_fit);
+    if (strong_fit.gap_db < fit.gap_db) {
+      fit = strong_fit;
+      best = std::move(from_strong);
+    }
+  }
+  *grid_cv_gap_db = fit.grid_cv_gap_db;
+  return best;
 }
 
 // The model with the additive tail fitted on the strikes (refine = false: its coarse grid only).

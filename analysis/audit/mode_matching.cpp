@@ -18,22 +18,39 @@ std::vector<ModeTrack> match_modes(const std::vector<std::vector<Mode>>& per_str
   std::vector<Item> all;
   for (std::size_t s = 0; s < per_strike.size(); ++s)
     for (const Mode& m : per_strike[s]) all.push_back({m.freq_hz, s, m});
-  std::sort(all.begin(), all.end(), [](const Item& a, const Item& b) { return a.freq_hz < b.freq_hz; });
+  // Clusters grow around anchors, the most energetic components first (energy amp^2 / decay): each
+  // component joins the nearest anchor within the tolerance or anchors a cluster of its own. Chaining
+  // each component to its neighbour instead would let a run of weak components (a room's answer
+  // around its modes) join two modes tens of Hz apart into one track.
+  const auto energy = [](const Mode& m) { return m.amp * m.amp / std::max(m.decay_per_s, 1e-9); };
+  std::vector<std::size_t> by_energy(all.size());
+  for (std::size_t k = 0; k < all.size(); ++k) by_energy[k] = k;
+  std::stable_sort(by_energy.begin(), by_energy.end(),
+                   [&](std::size_t a, std::size_t b) { return energy(all[a].mode) > energy(all[b].mode); });
+  std::vector<double> anchor_hz;
+  std::vector<std::vector<std::size_t>> clusters;
+  for (std::size_t k : by_energy) {
+    const double f = all[k].freq_hz;
+    std::size_t nearest = clusters.size();
+    for (std::size_t c = 0; c < clusters.size(); ++c) {
+      const double distance = std::abs(f - anchor_hz[c]);
+      if (distance <= std::max(options.merge_rel * anchor_hz[c], options.merge_hz) &&
+          (nearest == clusters.size() || distance < std::abs(f - anchor_hz[nearest])))
+        nearest = c;
+    }
+    if (nearest == clusters.size()) {
+      anchor_hz.push_back(f);
+      clusters.emplace_back();
+    }
+    clusters[nearest].push_back(k);
+  }
   std::vector<ModeTrack> tracks;
   const std::size_t strikes = per_strike.size();
   const std::size_t need = std::max<std::size_t>(1, std::size_t(std::ceil(options.min_presence * double(strikes) - 1e-9)));
-  std::size_t i = 0;
-  while (i < all.size()) {
-    // Grow a cluster while the next mode lies within the tolerance of the previous one.
-    std::size_t j = i + 1;
-    while (j < all.size()) {
-      const double f = all[j - 1].freq_hz;
-      if (all[j].freq_hz - f > std::max(options.merge_rel * f, options.merge_hz)) break;
-      ++j;
-    }
+  for (const std::vector<std::size_t>& cluster : clusters) {
     ModeTrack t;
     t.strikes.assign(strikes, {});
-    for (std::size_t k = i; k < j; ++k) t.strikes[all[k].strike].members.push_back(all[k].mode);
+    for (std::size_t k : cluster) t.strikes[all[k].strike].members.push_back(all[k].mode);
     std::vector<double> freqs;
     for (TrackObservation& o : t.strikes) {
       if (o.members.empty()) continue;
@@ -66,8 +83,8 @@ std::vector<ModeTrack> match_modes(const std::vector<std::vector<Mode>>& per_str
       t.freq_hz = freqs[freqs.size() / 2];
       tracks.push_back(std::move(t));
     }
-    i = j;
   }
+  std::sort(tracks.begin(), tracks.end(), [](const ModeTrack& a, const ModeTrack& b) { return a.freq_hz < b.freq_hz; });
   return tracks;
 }
 

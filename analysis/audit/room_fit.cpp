@@ -277,6 +277,13 @@ RoomFit fit_room(const AuditData& data, const AuditModel& without, const std::ve
   }
   fit.room = room_of(p);
   fit.gap_db = best;
+  // The coarse grid's rooms (one RT60 for every band) can all lie far from the fitted one; held-out
+  // strikes also score a small grid around it (its RT60s scaled by 0.7-1.4, its level -6 to +6 dB).
+  std::vector<std::vector<double>> local;
+  for (double lt : {-0.35, 0.0, 0.35})
+    for (double level : {-1.4, -0.7, 0.0, 0.7, 1.4})
+      local.push_back(objective.strike_gaps(rates_of(log_rt60_curve(p[0] + lt, p[1], p[2])), std::exp(p[3] + level)));
+  fit.grid_cv_gap_db = std::min(fit.grid_cv_gap_db, leave_one_out_gap(local));
   return fit;
 }
 

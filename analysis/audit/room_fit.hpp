@@ -18,7 +18,8 @@ struct RoomFit {
   Room room;                           // rt60_s per octave band, drr_db (enabled)
   std::vector<bool> band_measured;     // false: no mode in the band (its RT60 is the curve's)
   double gap_db = 0.0;                 // mean gap over the strikes with the room
-  double grid_cv_gap_db = 0.0;         // leave-one-strike-out gap of the coarse grid (grid_cross_validation.hpp)
+  double grid_cv_gap_db = 0.0;         // leave-one-strike-out gap of the coarse grid or of a small grid
+                                       // around the fitted room, the lower (grid_cross_validation.hpp)
 };
 
 // `without` must not contain a room. Coarse: one RT60 for every band and the DRR on a grid; then log

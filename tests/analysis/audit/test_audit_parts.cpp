@@ -96,6 +96,23 @@ TEST(AuditMatching, MergesCloseModesAndDropsRareOnes) {
   EXPECT_EQ(tracks[1].presence(), 3u);
 }
 
+// In a room the extraction also finds weak, fast components around each mode (the room's answer):
+// a run of them a few Hz apart must not join two modes 24 Hz apart into one track, as joining each
+// component to its neighbour would.
+TEST(AuditMatching, WeakComponentsBetweenTwoModesDoNotChainThem) {
+  std::vector<std::vector<Mode>> strikes;
+  for (int s = 0; s < 4; ++s)
+    strikes.push_back({{237.0 + 0.1 * s, 2.2, 1.0, 0}, {261.0 - 0.1 * s, 2.2, 0.5, 0}, {242.0 + s, 20.0, 0.05, 0},
+                       {248.0 + s, 20.0, 0.05, 0}, {254.0 + s, 20.0, 0.05, 0}});
+  const auto tracks = match_modes(strikes);
+  ASSERT_GE(tracks.size(), 2u);
+  EXPECT_NEAR(tracks.front().freq_hz, 237.15, 0.2);
+  EXPECT_NEAR(tracks.back().freq_hz, 260.85, 0.2);
+  for (const ModeTrack& t : tracks)
+    for (const TrackObservation& o : t.strikes)
+      for (const Mode& m : o.members) EXPECT_LT(std::abs(m.freq_hz - t.freq_hz), 8.0 + 1e-9) << t.freq_hz;
+}
+
 TEST(AuditLawFit, RecoversRayleighAndHybridExactly) {
   std::vector<DampingPoint> r, h;
   for (double f : {200.0, 500.0, 900.0, 1500.0, 2500.0, 4000.0, 6500.0}) {

@@ -56,11 +56,16 @@ void print_case(const CasePlan& plan, const indep::IndependentCase& c, const aud
 }
 
 // Runs cases [first, first + count) of the plan (case i uses seed first + i); prints the tally.
-Tally run_cases(std::size_t first, std::size_t count, bool grid_strengths, bool verbose) {
+// only: every case hides that effect alone (at the plan's strength), to tune one detector.
+Tally run_cases(std::size_t first, std::size_t count, bool grid_strengths, bool verbose, const std::string& only = "") {
   Tally tally = independent_tally();
   const auto t0 = std::chrono::steady_clock::now();
   for (std::size_t i = 0; i < count; ++i) {
-    const CasePlan plan = plan_case(first + i, i, grid_strengths, indep::independent_effects());
+    CasePlan plan = plan_case(first + i, i, grid_strengths, indep::independent_effects());
+    if (!only.empty()) {
+      plan.effects = {only};
+      plan.strengths = {0.1 + 0.2 * double((first + i) % 5)};
+    }
     const auto c0 = std::chrono::steady_clock::now();
     const indep::IndependentCase c = indep::generate_independent_case(plan.seed, plan.effects, plan.strengths);
     const audit::AuditResult r = audit::run_audit(audit::make_audit_data(c.recordings));
@@ -83,7 +88,8 @@ void expect_bars(Tally& tally) {
 }
 
 // Threshold tuning on this generator (disabled: --gtest_also_run_disabled_tests): every case printed.
-// Tuning seeds 40000-40999 with grid strengths; INDEPENDENT_TUNING_FIRST / _COUNT pick them.
+// Tuning seeds 40000-40999 with grid strengths; INDEPENDENT_TUNING_FIRST / _COUNT pick them,
+// INDEPENDENT_TUNING_ONLY=effect hides that effect in every case.
 // Writes one case's strikes as WAV files, to audit with the command line (disabled):
 // INDEPENDENT_DUMP=DIR INDEPENDENT_SEED=S [INDEPENDENT_EFFECTS=a,b INDEPENDENT_STRENGTHS=u,v].
 TEST(AuditIndependent, DISABLED_Dump) {
@@ -137,25 +143,26 @@ TEST(AuditIndependent, BandLimitedBurstsAndOtherContactShapesAreNamedAndClosed) 
 }
 
 TEST(AuditIndependent, DISABLED_Tuning) {
-  const Tally tally = run_cases(env_or("INDEPENDENT_TUNING_FIRST", 40000), env_or("INDEPENDENT_TUNING_COUNT", 44), true, true);
+  const char* only = std::getenv("INDEPENDENT_TUNING_ONLY");
+  const Tally tally = run_cases(env_or("INDEPENDENT_TUNING_FIRST", 40000), env_or("INDEPENDENT_TUNING_COUNT", 44), true, true,
+                                only ? only : "");
   EXPECT_GT(tally.clean, 0);
 }
 
-// Held-out seeds 43000-43219 (never used for tuning: not 1000-1179, 5000-13239, 40000-42999; 41000-41219
-// held out the audit before its room, band-limited bursts, contact shapes and onset phases), strengths
-// drawn from (0, 1), in two halves (each 110 cases, 10 of each effect alone, 20 clean, 10 pairs; 8-10
-// min each on one core): the audit must meet the bars on each half. Disabled because it does not yet:
-// the one run on these seeds named contact_duration 24/28, hit_position 20/24, residual_transient
-// 19/24, reverberation 16/23 and halved the gap above the floor in 154/180 (README, "Held to a second,
-// independent generator"); INDEPENDENT_VERBOSE prints every case. Enable when a change meets the bars
-// on fresh seeds, not on these.
+// Held-out seeds 44000-44219 (never used for tuning: not 1000-1179, 5000-13239, 40000-42999; 41000-41219
+// and 43000-43219 held out earlier audits), strengths drawn from (0, 1), in two halves (each 110 cases,
+// 10 of each effect alone, 20 clean, 10 pairs; ~5 min each on two cores): the audit must meet the bars
+// on each half. Disabled because it does not yet: the one run on these seeds named residual_transient
+// 21/27 and reverberation 22/26 (every other effect >= 92 %, clean 40/40, the gap above the floor
+// halving in 169/180; README, "Held to a second, independent generator"); INDEPENDENT_VERBOSE prints
+// every case. Enable when a change meets the bars on fresh seeds, not on these.
 TEST(AuditIndependent, DISABLED_HeldOutSeedsMeetTheBarsFirstHalf) {
-  Tally tally = run_cases(43000, 110, false, std::getenv("INDEPENDENT_VERBOSE") != nullptr);
+  Tally tally = run_cases(44000, 110, false, std::getenv("INDEPENDENT_VERBOSE") != nullptr);
   expect_bars(tally);
 }
 
 TEST(AuditIndependent, DISABLED_HeldOutSeedsMeetTheBarsSecondHalf) {
-  Tally tally = run_cases(43110, 110, false, std::getenv("INDEPENDENT_VERBOSE") != nullptr);
+  Tally tally = run_cases(44110, 110, false, std::getenv("INDEPENDENT_VERBOSE") != nullptr);
   expect_bars(tally);
 }
 
