@@ -1,6 +1,7 @@
 // Mode matching across strikes: the modes extracted from each strike are grouped into tracks, one
-// per physical mode of the object. Modes closer than the doublet tolerance fall into one track (the
-// plain model has one mode there; a split pair is the mode_doublet effect's business).
+// per physical mode of the object. Tracks grow around anchors, the most energetic components first:
+// a component within the doublet tolerance of an anchor joins the nearest one (the plain model has
+// one mode there; a split pair is the mode_doublet effect's business), any other anchors its own.
 #pragma once
 #include <cstddef>
 #include <vector>
