@@ -96,7 +96,7 @@ void YamlReader::fail(const YAML::Node& node, const std::string& key_path,
 
 void YamlReader::check_keys(const YAML::Node& map, const std::string& key_path,
                             std::initializer_list<const char*> allowed) const {
-  if (!map.IsMap()) fail(map, key_path, "expected a map of keys");
+  if (!map.IsDefined() || !map.IsMap()) fail(map, key_path, "expected a map of keys");
   std::vector<std::string> names(allowed.begin(), allowed.end());
   for (auto it = map.begin(); it != map.end(); ++it) {
     const std::string key = it->first.Scalar();
@@ -109,6 +109,8 @@ void YamlReader::check_keys(const YAML::Node& map, const std::string& key_path,
 }
 
 double YamlReader::number(const YAML::Node& node, const std::string& key_path) const {
+  // A key a map lacks is an undefined node: asking it anything else throws yaml-cpp's own error.
+  if (!node.IsDefined()) fail(node, key_path, "missing: expected a number");
   if (!node.IsScalar()) fail(node, key_path, "expected a number");
   const std::string& s = node.Scalar();
   double value = 0.0;
@@ -143,6 +145,7 @@ double YamlReader::non_negative(const YAML::Node& node, const std::string& key_p
 }
 
 long long YamlReader::integer(const YAML::Node& node, const std::string& key_path) const {
+  if (!node.IsDefined()) fail(node, key_path, "missing: expected an integer");
   if (!node.IsScalar()) fail(node, key_path, "expected an integer");
   const std::string& s = node.Scalar();
   long long value = 0;
@@ -153,6 +156,7 @@ long long YamlReader::integer(const YAML::Node& node, const std::string& key_pat
 }
 
 std::string YamlReader::text(const YAML::Node& node, const std::string& key_path) const {
+  if (!node.IsDefined()) fail(node, key_path, "missing: expected text");
   if (!node.IsScalar()) fail(node, key_path, "expected text");
   return node.Scalar();
 }

@@ -428,6 +428,7 @@ QuestionnaireBlock parse_questionnaire(const YamlReader& r, const YAML::Node& n,
     } else {
       r.check_keys(qs[i], qp, {"id", "text", "options"});
       if (qs[i]["id"]) question.id = r.text(qs[i]["id"], qp + ".id");
+      if (!qs[i]["text"]) r.fail(qs[i], qp + ".text", "missing: a question needs its text");
       question.text = r.text(qs[i]["text"], qp + ".text");
       question.options = texts(r, qs[i]["options"], qp + ".options");
     }

@@ -68,6 +68,14 @@ TEST(Protocol, UnknownBlockTypeSuggestsNearest) {
   EXPECT_EQ(p[0], dir.file("p.yaml") + ":8:12: unknown block type 'mushrra' (did you mean 'mushra'?)");
 }
 
+TEST(Protocol, AQuestionWithoutItsTextIsNamed) {
+  TempDir dir;
+  const auto p = check(dir, "study: t\nstimuli:\n  a: {file: a.wav}\n"
+                            "blocks:\n  - {type: questionnaire, id: q, questions: [{id: headphones}]}\n");
+  ASSERT_EQ(p.size(), 1u) << all(p);
+  EXPECT_EQ(p[0], dir.file("p.yaml") + ":5:46: blocks[0].questions[0].text: missing: a question needs its text");
+}
+
 TEST(Protocol, MissingStimulusSuggestsNearest) {
   TempDir dir;
   const auto p = check(dir, "study: t\nstimuli:\n  steel: {file: a.wav}\n  glass: {file: b.wav}\n"
