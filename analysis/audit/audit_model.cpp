@@ -69,9 +69,9 @@ ModalModel strike_model(const AuditModel& model, std::size_t s) {
   return out;
 }
 
-void add_decaying_noise_power(BarkSpectrogram& spec, const SpectrogramGrid& g, double direct_energy, double t60_s,
-                              double energy_db, const std::vector<double>* bins_per_band, double hold_s) {
-  if (t60_s <= 0.0) return;
+std::size_t add_decaying_noise_power(BarkSpectrogram& spec, const SpectrogramGrid& g, double direct_energy, double t60_s,
+                                     double energy_db, const std::vector<double>* bins_per_band, double hold_s) {
+  if (t60_s <= 0.0) return 0;
   // The noise's energy is relative to the direct sound over the whole strike, as synthesis adds it.
   const double var0 = decaying_noise_variance(direct_energy, g.sample_rate_hz, g.samples, t60_s, energy_db, hold_s);
   // Per bin, white noise of variance v_i gives E|X|^2 = sum_i w_i^2 v_i; v_i is var0 while held, then
@@ -91,10 +91,11 @@ void add_decaying_noise_power(BarkSpectrogram& spec, const SpectrogramGrid& g, d
       for (std::size_t i = 0; i < g.window; ++i)
         level += w2[i] * var0 * (t0 + i < held ? 1.0 : std::pow(r, double(t0 + i - held)));
     }
-    if (!(level > 1e-30 * var0)) break;
+    if (!(level > 1e-30 * var0)) return f;
     for (std::size_t b = 0; b < spec.bands; ++b)
       spec.at(f, b) += level * (bins_per_band ? (*bins_per_band)[b] : double(g.band_bins[b]));
   }
+  return spec.frames;
 }
 
 std::vector<double> burst_bins_per_band(const SpectrogramGrid& g, double low_hz, double high_hz) {

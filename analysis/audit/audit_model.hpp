@@ -99,8 +99,9 @@ void add_band_noise_power(BarkSpectrogram& spec, const SpectrogramGrid& grid, co
 // Adds the expected band power of synthesis/effects' decaying noise (t60_s, energy_db relative to a
 // direct sound of energy direct_energy) to a spectrogram on `grid` (noise starting at sample 0, held
 // for hold_s). White noise fills each band's bins; a band-limited burst only bins_per_band[b] of them,
-// at a density raised by its band's share (burst_bins_per_band).
-void add_decaying_noise_power(BarkSpectrogram& spec, const SpectrogramGrid& grid, double direct_energy,
+// at a density raised by its band's share (burst_bins_per_band). Returns how many frames, from the
+// first, it changed (the later ones lie more than 300 dB under the noise's start).
+std::size_t add_decaying_noise_power(BarkSpectrogram& spec, const SpectrogramGrid& grid, double direct_energy,
                               double t60_s, double energy_db, const std::vector<double>* bins_per_band = nullptr,
                               double hold_s = 0.0);
 

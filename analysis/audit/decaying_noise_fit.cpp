@@ -22,8 +22,11 @@ DecayingNoiseFit fit_decaying_noise(const AuditData& data, const AuditModel& wit
     energy.push_back(e);
   }
   const GapTarget target(data, strikes);
+  // A burst changes a strike's first frames only: the gap re-reads those, and the rest is summed once.
+  std::vector<GapTarget::FrameTails> tails;
+  for (std::size_t i = 0; i < strikes.size(); ++i) tails.push_back(target.frame_tails(i, base[i]));
+  std::vector<Spectra> work = base;  // base[i] but for the frames the noise being tried changed
   const Grids& grids = data.measured.grids;
-  Spectra spec;
   std::vector<double> per_strike(strikes.size());
   NoiseBand band;
   double hold_s = 0.0;
@@ -31,12 +34,16 @@ DecayingNoiseFit fit_decaying_noise(const AuditData& data, const AuditModel& wit
   const auto gap_of = [&](double t60, double level) {
     double sum = 0.0;
     for (std::size_t i = 0; i < strikes.size(); ++i) {
-      spec = base[i];
+      std::array<std::size_t, kResolutions> changed{};
       for (std::size_t r = 0; r < kResolutions; ++r)
-        add_decaying_noise_power(spec[r], grids[r], energy[i], t60, level, band.high_hz > 0.0 ? &band_bins[r] : nullptr,
-                                 hold_s);
-      per_strike[i] = target.strike_gap(i, spec);
+        changed[r] = add_decaying_noise_power(work[i][r], grids[r], energy[i], t60, level,
+                                              band.high_hz > 0.0 ? &band_bins[r] : nullptr, hold_s);
+      per_strike[i] = target.strike_gap(i, work[i], changed, tails[i]);
       sum += per_strike[i];
+      for (std::size_t r = 0; r < kResolutions; ++r) {
+        const std::size_t cells = changed[r] * base[i][r].bands;
+        std::copy_n(base[i][r].power.begin(), cells, work[i][r].power.begin());
+      }
     }
     return strikes.empty() ? 0.0 : sum / double(strikes.size());
   };

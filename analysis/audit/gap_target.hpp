@@ -37,11 +37,27 @@ class GapTarget {
   const std::vector<std::size_t>& strikes() const { return strikes_; }
   // Gap of strikes()[i] against `model` (dB).
   double strike_gap(std::size_t i, const Spectra& model) const;
+
+  // A fit that adds power to a strike's first frames only (a burst) re-reads those alone: the gap's
+  // sum and cell count over frames [f, end) of a fixed rendering, for every f and resolution.
+  struct FrameTails {
+    std::array<std::vector<double>, kResolutions> total;
+    std::array<std::vector<std::size_t>, kResolutions> count;
+  };
+  FrameTails frame_tails(std::size_t i, const Spectra& base) const;
+  // Gap of strikes()[i] against `model`, which equals the rendering `tails` was made from beyond its
+  // first changed_frames[r] frames.
+  double strike_gap(std::size_t i, const Spectra& model, const std::array<std::size_t, kResolutions>& changed_frames,
+                    const FrameTails& tails) const;
   // Strike i's clamped measured levels and floor at resolution r.
   const std::vector<double>& measured_db(std::size_t i, std::size_t r) const { return measured_db_[i][r]; }
   double floor_db(std::size_t i, std::size_t r) const { return floor_db_[i][r]; }
 
  private:
+  // Adds the gap's sum and count over model cells [from, to) at resolution r.
+  void accumulate(std::size_t i, std::size_t r, const std::vector<double>& power, std::size_t from, std::size_t to,
+                  double& total, std::size_t& count) const;
+
   std::vector<std::size_t> strikes_;
   std::vector<std::array<std::vector<double>, kResolutions>> measured_db_;
   std::vector<std::array<double, kResolutions>> floor_db_, floor_power_;
