@@ -124,10 +124,16 @@ AuditResult run_audit(const AuditData& data, const std::optional<ModalModel>& gi
       result.untested.push_back(e.name + " needs at least " + std::to_string(e.min_strikes) + " strikes");
   while (result.named.size() < options.max_effects) {
     std::vector<Candidate> round;
-    const Effect* best = nullptr;
-    double best_improvement = 0.0, best_cv = cv;
-    Detection best_detection;
-    std::vector<AuditModel> best_folds;
+    // Per tried candidate that passed: its effect, detection and held-out fold models.
+    struct Passed {
+      const Effect* effect;
+      Detection detection;
+      std::vector<AuditModel> folds;
+      double cv_gap_db, improvement_db;
+    };
+    std::vector<Passed> passed;
+    const Effect* specific = nullptr;  // the specific effect that improved most so far
+    double specific_improvement_db = 0.0;
     // Specific effects first; the generic ones only when none of those is named this round.
     for (const bool generic : {false, true})
     for (const Effect& e : catalog) {
@@ -143,8 +149,8 @@ AuditResult run_audit(const AuditData& data, const std::optional<ModalModel>& gi
         round.push_back(c);
         continue;
       }
-      if (generic && best) {
-        c.note = "not tried this round: " + best->name + " explains the strikes more specifically";
+      if (generic && specific) {
+        c.note = "not tried this round: " + specific->name + " explains the strikes more specifically";
         round.push_back(c);
         continue;
       }
@@ -159,25 +165,36 @@ AuditResult run_audit(const AuditData& data, const std::optional<ModalModel>& gi
         std::vector<AuditModel> with_folds;
         c.cv_gap_db = cross_validated_gap(data, with, &with_folds);
         c.improvement_db = cv - c.cv_gap_db - e.penalty_db;
-        if (c.improvement_db > best_improvement) {
-          best_improvement = c.improvement_db;
-          best = &e;
-          best_cv = c.cv_gap_db;
-          best_detection = det;
-          best_folds = std::move(with_folds);
+        if (c.improvement_db > 0.0) {
+          if (!generic && c.improvement_db > specific_improvement_db) {
+            specific = &e;
+            specific_improvement_db = c.improvement_db;
+          }
+          passed.push_back({&e, det, std::move(with_folds), c.cv_gap_db, c.improvement_db});
         }
       }
       round.push_back(c);
     }
+    // The largest held-out improvement, unless another passing effect explains its evidence too.
+    Passed* chosen = nullptr;
+    for (Passed& p : passed)
+      if (!chosen || p.improvement_db > chosen->improvement_db) chosen = &p;
+    for (Passed& p : passed)
+      if (chosen && std::ranges::count(p.detection.precedes, chosen->effect->name) > 0) {
+        chosen = &p;
+        break;
+      }
+    const Effect* best = chosen ? chosen->effect : nullptr;
     result.rounds.push_back(round);
     if (!best) break;
     recipe.effects.push_back(best);
     AuditModel next;
     const double next_gap = in_sample_gap(data, recipe, &next);
-    result.named.push_back({best->name, gap, next_gap, cv - best_cv, best->parameters(data, next), best_detection.evidence});
+    result.named.push_back({best->name, gap, next_gap, cv - chosen->cv_gap_db, best->parameters(data, next),
+                            chosen->detection.evidence});
     gap = next_gap;
-    cv = best_cv;
-    folds = std::move(best_folds);
+    cv = chosen->cv_gap_db;
+    folds = std::move(chosen->folds);
     current = std::move(next);
   }
   result.final_model = current;

@@ -17,6 +17,9 @@ struct Detection {
   bool passes = false;
   double statistic = 0.0;
   std::string evidence;   // one sentence
+  // Effects whose evidence this one also explains: where this one passes in the same round and
+  // improves the held-out gap, it is named before them even if they improve it more.
+  std::vector<std::string> precedes;
 };
 
 using Parameters = std::vector<std::pair<std::string, double>>;

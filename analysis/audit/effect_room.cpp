@@ -15,7 +15,10 @@
 // refits the law and amplitudes on what is left, and fits the room.
 // Detector: the extension lowers the in-sample gap by enough, and the room itself (its reverberant part
 // and its dry amplitudes) by some of it: dropping tracks and reading amplitudes again alone do not
-// count as a room.
+// count as a room. A strong room also makes the extracted decays of a mode differ from strike to
+// strike, mode by mode; where no part of those differences is shared by a strike's modes
+// (shared_decay_excess.hpp), support_damping's per-strike decays would absorb the room, and the room
+// goes before it.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -25,6 +28,7 @@
 #include "analysis/audit/decaying_noise_fit.hpp"
 #include "analysis/audit/effect_catalog.hpp"
 #include "analysis/audit/room_fit.hpp"
+#include "analysis/audit/shared_decay_excess.hpp"
 #include "synthesis/bark.hpp"
 
 namespace ms::audit {
@@ -47,6 +51,10 @@ constexpr std::size_t kFitStrikes = 4, kMinRoomStrikes = 3;
 // The strong first guess of a room (mid-band RT60 and DRR of a reverberant lab), tried where the
 // grid's guess has a DRR above kWeakGuessDrrDb.
 constexpr double kStrongGuessRt60S = 0.6, kStrongGuessDrrDb = 0.0, kWeakGuessDrrDb = 6.0;
+// A room strong enough to scatter the extracted decays: tuning rooms support_damping outscored were
+// fitted at DRR 3.0-12.8 dB; the real Paiste and low agogo bells, whose long faint tails fit as rooms
+// of DRR 25 and 21 dB, are better explained by support damping first.
+constexpr double kScatteringRoomDrrDb = 15.0;
 
 // Median over the strikes of a track's decay and energy (amp^2 / 4d, per unit strike gain, dB).
 struct TrackLevel {
@@ -268,6 +276,16 @@ Detection detect(const AuditData& data, const AuditModel& current) {
     AuditModel silent = with;
     silent.room.drr_db = 200.0;
     d.passes = d.passes && mean_gap(silent, data) - after_db >= kMinRoomGainDb;
+    if (d.passes && with.room.drr_db <= kScatteringRoomDrrDb) {
+      const SharedDecayExcess shared = shared_decay_excess(data);
+      if (!shared.shared()) {
+        d.precedes.push_back("support_damping");
+        char buf[200];
+        std::snprintf(buf, sizeof buf, "; its answer scatters the extracted decays with no part shared by a strike's "
+                      "modes (F = %.2f, p = %.2g), so it goes before support_damping", shared.f, shared.p);
+        d.evidence += buf;
+      }
+    }
   }
   return d;
 }

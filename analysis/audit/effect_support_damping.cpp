@@ -1,14 +1,17 @@
 // support_damping: one-sided, strike-dependent excess damping from the way the object is held
 // (Zheng & James; Sterling et al.). Detector: the same mode decays at different rates in different
 // strikes (median relative spread over modes), well beyond the extraction's error, with an EMG
-// (one-sided excess) describing the (lambda, c) scatter better than a normal law. Extension: the
-// material law becomes the EMG fit's lower edge and each strike gets its per-mode excess decay.
+// (one-sided excess) describing the (lambda, c) scatter better than a normal law. The evidence says
+// whether a strike's modes share the excess (shared_decay_excess.hpp: a hand that grips harder damps
+// all of them). Extension: the material law becomes the EMG fit's lower edge and each strike gets
+// its per-mode excess decay.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include "analysis/audit/baseline_fit.hpp"
 #include "analysis/audit/effect_catalog.hpp"
+#include "analysis/audit/shared_decay_excess.hpp"
 #include "analysis/damping/damping_fit.hpp"
 
 namespace ms::audit {
@@ -62,6 +65,14 @@ Detection detect(const AuditData& data, const AuditModel& model) {
   std::snprintf(buf, sizeof buf, "the same mode decays up to %.0f %% faster in one strike than in another "
                 "(median over %zu modes)", 100.0 * sp.median_spread, sp.modes);
   d.evidence = buf;
+  if (d.passes) {
+    const SharedDecayExcess shared = shared_decay_excess(data);
+    if (shared.modes >= kMinSharedModes) {
+      std::snprintf(buf, sizeof buf, "; %s by a strike's modes (F = %.2f, p = %.2g over %zu modes)",
+                    shared.shared() ? "shared" : "not shared", shared.f, shared.p, shared.modes);
+      d.evidence += buf;
+    }
+  }
   const auto pts = track_points(data, all_strikes(data));
   if (d.passes && pts.size() >= 8) {
     const DampingFit emg = emg_fit(data, model, all_strikes(data));

@@ -18,6 +18,7 @@
 #include "analysis/audit/audit.hpp"
 #include "analysis/audit/effect_catalog.hpp"
 #include "../audit_cases.hpp"
+#include "analysis/audit/shared_decay_excess.hpp"
 #include "independent_generator.hpp"
 #include "synthesis/audio_file.hpp"
 
@@ -142,6 +143,27 @@ TEST(AuditIndependent, BandLimitedBurstsAndOtherContactShapesAreNamedAndClosed) 
   }
 }
 
+// A hand grips harder in some strikes than in others, so a strike's modes share its excess decay; a
+// room's answer makes the extracted decays wander mode by mode. On tuning seeds the two-way analysis
+// tells them apart, and where support_damping would outscore a strong room by absorbing its scattered
+// decays, the room is named first (seed 40507: support 4.04 dB against the room's 3.74 held out).
+TEST(AuditIndependent, ARoomsScatteredDecaysAreNotTakenForAHand) {
+  for (std::uint64_t seed : {40504u, 40507u, 40510u}) {
+    const auto hand = audit::make_audit_data(indep::generate_independent_case(seed, {"support_damping"}, {0.5}).recordings);
+    const auto room = audit::make_audit_data(indep::generate_independent_case(seed, {"reverberation"}, {0.5}).recordings);
+    const audit::SharedDecayExcess h = audit::shared_decay_excess(hand), r = audit::shared_decay_excess(room);
+    std::printf("seed %llu: hand F = %.2f (p = %.2g, %zu modes), room F = %.2f (p = %.2g, %zu modes)\n",
+                static_cast<unsigned long long>(seed), h.f, h.p, h.modes, r.f, r.p, r.modes);
+    EXPECT_TRUE(h.shared()) << seed;
+    EXPECT_FALSE(r.shared()) << seed;
+  }
+  const indep::IndependentCase c = indep::generate_independent_case(40507, {"reverberation"}, {0.5});
+  const audit::AuditResult r = audit::run_audit(audit::make_audit_data(c.recordings));
+  ASSERT_FALSE(r.named.empty());
+  EXPECT_EQ(r.named.front().effect, "reverberation");
+  EXPECT_GE(r.share_above_floor, 0.5);
+}
+
 TEST(AuditIndependent, DISABLED_Tuning) {
   const char* only = std::getenv("INDEPENDENT_TUNING_ONLY");
   const Tally tally = run_cases(env_or("INDEPENDENT_TUNING_FIRST", 40000), env_or("INDEPENDENT_TUNING_COUNT", 44), true, true,
@@ -149,20 +171,21 @@ TEST(AuditIndependent, DISABLED_Tuning) {
   EXPECT_GT(tally.clean, 0);
 }
 
-// Held-out seeds 44000-44219 (never used for tuning: not 1000-1179, 5000-13239, 40000-42999; 41000-41219
-// and 43000-43219 held out earlier audits), strengths drawn from (0, 1), in two halves (each 110 cases,
-// 10 of each effect alone, 20 clean, 10 pairs; ~5 min each on two cores): the audit must meet the bars
-// on each half. Disabled because it does not yet: the one run on these seeds named residual_transient
-// 21/27 and reverberation 22/26 (every other effect >= 92 %, clean 40/40, the gap above the floor
-// halving in 169/180; README, "Held to a second, independent generator"); INDEPENDENT_VERBOSE prints
-// every case. Enable when a change meets the bars on fresh seeds, not on these.
+// Held-out seeds 44220-44439 (never used for tuning: not 1000-1179, 5000-13239, 40000-42999; 41000-41219,
+// 43000-43219 and 44000-44219 held out earlier audits), strengths drawn from (0, 1), in two halves (each
+// 110 cases, 10 of each effect alone, 20 clean, 10 pairs; ~4 min each on two cores): the audit must meet
+// the bars on each half. Disabled because it does not yet: the one run on these seeds named
+// residual_transient 18/23, reverberation 20/23 and hit_position 23/27, and the gap above the floor
+// halved in 159/180 (every other effect >= 96 %, clean 40/40; README, "Held to a second, independent
+// generator"); INDEPENDENT_VERBOSE prints every case. Enable when a change meets the bars on fresh
+// seeds, not on these.
 TEST(AuditIndependent, DISABLED_HeldOutSeedsMeetTheBarsFirstHalf) {
-  Tally tally = run_cases(44000, 110, false, std::getenv("INDEPENDENT_VERBOSE") != nullptr);
+  Tally tally = run_cases(44220, 110, false, std::getenv("INDEPENDENT_VERBOSE") != nullptr);
   expect_bars(tally);
 }
 
 TEST(AuditIndependent, DISABLED_HeldOutSeedsMeetTheBarsSecondHalf) {
-  Tally tally = run_cases(44110, 110, false, std::getenv("INDEPENDENT_VERBOSE") != nullptr);
+  Tally tally = run_cases(44330, 110, false, std::getenv("INDEPENDENT_VERBOSE") != nullptr);
   expect_bars(tally);
 }
 
