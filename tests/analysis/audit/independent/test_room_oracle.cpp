@@ -119,6 +119,7 @@ TEST(AuditRoomOracle, TheRoomModelWithTheTrueModesExplainsPartOfAStrongRoom) {
   const TruthFit dry = truth_gap(roomed, data, nullptr, true), wet = truth_gap(roomed, data, &truth, true);
   const TruthFit fair_dry = truth_gap(roomed, data, nullptr, false), fair_wet = truth_gap(roomed, data, &truth, false);
   const audit::AuditResult r = audit::run_audit(data);
+  ASSERT_TRUE(r.final_model.room.enabled) << "the audit fitted no room";
   const TruthFit in_fitted = truth_gap(roomed, data, &r.final_model.room, false);
   std::printf("%s\n  true modes without the room: gap %.2f dB, amplitudes read %.2f dB (without their jitter %.2f dB)\n"
               "  true modes in the true room: gap %.2f dB, amplitudes read %.2f dB (without their jitter %.2f dB)\n"
