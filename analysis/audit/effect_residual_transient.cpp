@@ -4,6 +4,9 @@
 // tail follow that trend), median over strikes; or by less where the extraction found attack noise no
 // mode explains after the contact in most strikes (Strike::attack_noise_s). Both look at the
 // recordings, not the model: a model-relative statistic would see a room tail's early part as well.
+// A burst in a band can hide from the high-frequency measure under higher modes: then the burst fitted
+// to every strike must lower the attack's gap, by enough in most strikes, or, where the extraction
+// found attack noise, by a little in nearly every strike.
 // Extension: a burst, white or in a band, held for a while or not (60 dB decay time, energy relative to
 // the direct sound, the band and the hold, fitted on the training strikes); it follows each strike's
 // gain. It replaces any burst pseudo-modes left: tracks the mode fit made of the burst's noise, which
@@ -31,6 +34,10 @@ constexpr double kAttackS = 3e-3, kLateS = 10e-3, kLateSpanS = 10e-3;
 // rooms and noise floors reach 0.6-3.4 (they compete by cross-validation).
 constexpr double kMinAttackGapImprovementDb = 0.5;
 constexpr double kMinStrikeAttackGainDb = 0.1, kMinStrikesBetter = 0.75;
+// ... or, where the extraction also found attack noise no mode explains (kMinAttackNoiseS), by less in
+// nearly every strike. Independent generator's tuning seeds: such bursts 0.31-0.47 dB in 100 % of the
+// strikes; its 85 cases without a burst (clean, contacts, rooms, noise floors) found no attack noise.
+constexpr double kMinNoisyAttackGapImprovementDb = 0.2, kMinNoisyStrikesBetter = 0.9;
 // ... and the attack's high-frequency power must not fall short of the later decay extrapolated back
 // (a burst adds power at the start; a muted or long-contact strike has less: the real kenkeni bell
 // struck muted -6.3 dB; independent bursts -1.1 dB at the least).
@@ -152,9 +159,13 @@ Detection detect(const AuditData& data, const AuditModel& current) {
     better += before[s] - after[s] >= kMinStrikeAttackGainDb;
   }
   const bool in_every_strike = better >= 2 && double(better) >= kMinStrikesBetter * double(before.size());
-  d.passes = d.statistic >= kMinAttackExcessDb || (noise_s >= kMinAttackNoiseS && d.statistic >= kMinWeakExcessDb) ||
-             (attack_before - attack_after >= kMinAttackGapImprovementDb && in_every_strike &&
-              d.statistic >= kMaxAttackDeficitDb);
+  const bool in_nearly_all = better >= 2 && double(better) >= kMinNoisyStrikesBetter * double(before.size());
+  const double attack_gain_db = attack_before - attack_after;
+  const bool noisy_attack = noise_s >= kMinAttackNoiseS;
+  d.passes = d.statistic >= kMinAttackExcessDb || (noisy_attack && d.statistic >= kMinWeakExcessDb) ||
+             (d.statistic >= kMaxAttackDeficitDb &&
+              ((attack_gain_db >= kMinAttackGapImprovementDb && in_every_strike) ||
+               (noisy_attack && attack_gain_db >= kMinNoisyAttackGapImprovementDb && in_nearly_all)));
   char buf[500];
   std::snprintf(buf, sizeof buf, "the attack holds noise no mode makes: the high-frequency power of the "
                 "first %.0f ms stands %.1f dB above the decay of 10-30 ms extrapolated back, the mode fit "

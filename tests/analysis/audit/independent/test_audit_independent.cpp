@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "analysis/audit/audit.hpp"
@@ -143,6 +144,20 @@ TEST(AuditIndependent, BandLimitedBurstsAndOtherContactShapesAreNamedAndClosed) 
   }
 }
 
+// A burst in a band that hides under higher modes from the high-frequency measure and barely moves the
+// attack's gap overall (tuning seeds 40507, 40508, 40519: 0.31-0.47 dB) is named where the extraction
+// found attack noise no mode explains and the burst fitted to every strike lowers every strike's
+// attack gap; it closes most of the little gap above the floor.
+TEST(AuditIndependent, AWeakBurstIsNamedWhereTheAttackHoldsNoiseNoModeMakes) {
+  for (const auto& [seed, strength] : {std::pair{40507u, 0.5}, std::pair{40519u, 0.9}}) {
+    const indep::IndependentCase c = indep::generate_independent_case(seed, {"residual_transient"}, {strength});
+    const audit::AuditResult r = audit::run_audit(audit::make_audit_data(c.recordings));
+    ASSERT_FALSE(r.named.empty()) << seed;
+    EXPECT_EQ(r.named.front().effect, "residual_transient") << seed;
+    EXPECT_GE(r.share_above_floor, 0.5) << seed;
+  }
+}
+
 // A hand grips harder in some strikes than in others, so a strike's modes share its excess decay; a
 // room's answer makes the extracted decays wander mode by mode. On tuning seeds the two-way analysis
 // tells them apart, and where support_damping would outscore a strong room by absorbing its scattered
@@ -171,21 +186,21 @@ TEST(AuditIndependent, DISABLED_Tuning) {
   EXPECT_GT(tally.clean, 0);
 }
 
-// Held-out seeds 44220-44439 (never used for tuning: not 1000-1179, 5000-13239, 40000-42999; 41000-41219,
-// 43000-43219 and 44000-44219 held out earlier audits), strengths drawn from (0, 1), in two halves (each
-// 110 cases, 10 of each effect alone, 20 clean, 10 pairs; ~4 min each on two cores): the audit must meet
-// the bars on each half. Disabled because it does not yet: the one run on these seeds named
-// residual_transient 18/23, reverberation 20/23 and hit_position 23/27, and the gap above the floor
-// halved in 159/180 (every other effect >= 96 %, clean 40/40; README, "Held to a second, independent
-// generator"); INDEPENDENT_VERBOSE prints every case. Enable when a change meets the bars on fresh
-// seeds, not on these.
+// Held-out seeds 44440-44659 (never used for tuning: not 1000-1179, 5000-13239, 40000-42999; 41000-41219,
+// 43000-43219, 44000-44219 and 44220-44439 held out earlier audits), strengths drawn from (0, 1), in two
+// halves (each 110 cases, 10 of each effect alone, 20 clean, 10 pairs; ~4 min each on two cores): the
+// audit must meet the bars on each half. Disabled because it does not yet: the one run on these seeds
+// met every bar on the first half, but on the second named reverberation 10/12 and contact_duration
+// 11/13 (over both: rooms 20/23, contacts 24/27, bursts 24/26, hit points 24/24, clean 40/40, the gap
+// above the floor halving in 173/180; README, "Held to a second, independent generator");
+// INDEPENDENT_VERBOSE prints every case. Enable when a change meets the bars on fresh seeds, not on these.
 TEST(AuditIndependent, DISABLED_HeldOutSeedsMeetTheBarsFirstHalf) {
-  Tally tally = run_cases(44220, 110, false, std::getenv("INDEPENDENT_VERBOSE") != nullptr);
+  Tally tally = run_cases(44440, 110, false, std::getenv("INDEPENDENT_VERBOSE") != nullptr);
   expect_bars(tally);
 }
 
 TEST(AuditIndependent, DISABLED_HeldOutSeedsMeetTheBarsSecondHalf) {
-  Tally tally = run_cases(44330, 110, false, std::getenv("INDEPENDENT_VERBOSE") != nullptr);
+  Tally tally = run_cases(44550, 110, false, std::getenv("INDEPENDENT_VERBOSE") != nullptr);
   expect_bars(tally);
 }
 
