@@ -108,11 +108,15 @@ void YamlReader::check_keys(const YAML::Node& map, const std::string& key_path,
   }
 }
 
+const std::string& YamlReader::scalar(const YAML::Node& node, const std::string& key_path,
+                                      const std::string& expected) const {
+  if (!node.IsDefined()) fail(node, key_path, "missing: expected " + expected);
+  if (!node.IsScalar()) fail(node, key_path, "expected " + expected);
+  return node.Scalar();
+}
+
 double YamlReader::number(const YAML::Node& node, const std::string& key_path) const {
-  // A key a map lacks is an undefined node: asking it anything else throws yaml-cpp's own error.
-  if (!node.IsDefined()) fail(node, key_path, "missing: expected a number");
-  if (!node.IsScalar()) fail(node, key_path, "expected a number");
-  const std::string& s = node.Scalar();
+  const std::string& s = scalar(node, key_path, "a number");
   double value = 0.0;
   const char* begin = s.data();
   const char* end = s.data() + s.size();
@@ -145,9 +149,7 @@ double YamlReader::non_negative(const YAML::Node& node, const std::string& key_p
 }
 
 long long YamlReader::integer(const YAML::Node& node, const std::string& key_path) const {
-  if (!node.IsDefined()) fail(node, key_path, "missing: expected an integer");
-  if (!node.IsScalar()) fail(node, key_path, "expected an integer");
-  const std::string& s = node.Scalar();
+  const std::string& s = scalar(node, key_path, "an integer");
   long long value = 0;
   auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
   if (ec != std::errc() || ptr != s.data() + s.size())
@@ -156,9 +158,7 @@ long long YamlReader::integer(const YAML::Node& node, const std::string& key_pat
 }
 
 std::string YamlReader::text(const YAML::Node& node, const std::string& key_path) const {
-  if (!node.IsDefined()) fail(node, key_path, "missing: expected text");
-  if (!node.IsScalar()) fail(node, key_path, "expected text");
-  return node.Scalar();
+  return scalar(node, key_path, "text");
 }
 
 bool is_identifier(const std::string& t) {

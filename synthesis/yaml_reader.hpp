@@ -42,6 +42,10 @@ class YamlReader {
   const std::string& file() const { return file_; }
 
  private:
+  // The node's scalar; fails naming `expected` ("a number") where the node is missing (a key its map
+  // lacks: asking yaml-cpp anything else of it throws its own error) or is not a scalar.
+  const std::string& scalar(const YAML::Node& node, const std::string& key_path, const std::string& expected) const;
+
   std::string file_;
   std::vector<std::string> overridden_;
 };
