@@ -132,8 +132,12 @@ AuditResult run_audit(const AuditData& data, const std::optional<ModalModel>& gi
       double cv_gap_db, improvement_db;
     };
     std::vector<Passed> passed;
-    const Effect* specific = nullptr;  // the specific effect that improved most so far
-    double specific_improvement_db = 0.0;
+    const auto most_improved = [&passed]() {
+      Passed* top = nullptr;
+      for (Passed& p : passed)
+        if (!top || p.improvement_db > top->improvement_db) top = &p;
+      return top;
+    };
     // Specific effects first; the generic ones only when none of those is named this round.
     for (const bool generic : {false, true})
     for (const Effect& e : catalog) {
@@ -149,8 +153,9 @@ AuditResult run_audit(const AuditData& data, const std::optional<ModalModel>& gi
         round.push_back(c);
         continue;
       }
-      if (generic && specific) {
-        c.note = "not tried this round: " + specific->name + " explains the strikes more specifically";
+      // A generic effect is tried only where nothing has passed before it this round.
+      if (const Passed* specific = generic ? most_improved() : nullptr) {
+        c.note = "not tried this round: " + specific->effect->name + " explains the strikes more specifically";
         round.push_back(c);
         continue;
       }
@@ -165,20 +170,12 @@ AuditResult run_audit(const AuditData& data, const std::optional<ModalModel>& gi
         std::vector<AuditModel> with_folds;
         c.cv_gap_db = cross_validated_gap(data, with, &with_folds);
         c.improvement_db = cv - c.cv_gap_db - e.penalty_db;
-        if (c.improvement_db > 0.0) {
-          if (!generic && c.improvement_db > specific_improvement_db) {
-            specific = &e;
-            specific_improvement_db = c.improvement_db;
-          }
-          passed.push_back({&e, det, std::move(with_folds), c.cv_gap_db, c.improvement_db});
-        }
+        if (c.improvement_db > 0.0) passed.push_back({&e, det, std::move(with_folds), c.cv_gap_db, c.improvement_db});
       }
       round.push_back(c);
     }
     // The largest held-out improvement, unless another passing effect explains its evidence too.
-    Passed* chosen = nullptr;
-    for (Passed& p : passed)
-      if (!chosen || p.improvement_db > chosen->improvement_db) chosen = &p;
+    Passed* chosen = most_improved();
     for (Passed& p : passed)
       if (chosen && std::ranges::count(p.detection.precedes, chosen->effect->name) > 0) {
         chosen = &p;

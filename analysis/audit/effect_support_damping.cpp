@@ -18,7 +18,6 @@ namespace ms::audit {
 
 namespace {
 
-constexpr double kStrongWithin = 0.0316;  // -30 dB
 constexpr double kMinSpread = 0.15;  // median (max d - min d) / min d over modes (tuning seeds)
 
 struct Spread {
@@ -35,7 +34,7 @@ Spread decay_spread(const AuditData& data) {
   for (const ModeTrack& t : data.tracks) {
     double loudest = 0.0;
     for (const TrackObservation& o : t.strikes) loudest = std::max(loudest, o.amp);
-    if (loudest < kStrongWithin * strongest) continue;
+    if (loudest < kStrongTrackWithin * strongest) continue;
     double lo = 1e300, hi = 0.0;
     int n = 0;
     for (const TrackObservation& o : t.strikes)

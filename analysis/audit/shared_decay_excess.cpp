@@ -8,10 +8,6 @@
 
 namespace ms::audit {
 
-namespace {
-constexpr double kStrongWithin = 0.0316;  // -30 dB: fainter tracks near the noise have noisy decays
-}
-
 SharedDecayExcess shared_decay_excess(const AuditData& data) {
   double strongest = 0.0;
   for (const ModeTrack& t : data.tracks)
@@ -26,7 +22,7 @@ SharedDecayExcess shared_decay_excess(const AuditData& data) {
       // A resolved doublet's merged decay is less reliable.
       everywhere = everywhere && o.present && o.members.size() == 1 && o.decay_per_s > 0.0;
     }
-    if (!everywhere || loudest < kStrongWithin * strongest) continue;
+    if (!everywhere || loudest < kStrongTrackWithin * strongest) continue;
     std::vector<double> row;
     for (const TrackObservation& o : t.strikes) row.push_back(std::log(o.decay_per_s));
     log_decay.push_back(std::move(row));

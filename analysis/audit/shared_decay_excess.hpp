@@ -13,6 +13,9 @@ namespace ms::audit {
 // Tuning seeds: rooms F <= 2.2 over 6-10 strikes (p >= 0.06); the independent generator's hands
 // F >= 6.6. The first generator's support draws each mode's excess alone (F 0.5-8.5).
 constexpr double kMaxSharedP = 0.01;
+// Tracks whose loudest strike lies this far below the strongest track's (-30 dB) have decays too
+// noisy to compare across strikes (near the noise); support_damping's spread reads the same tracks.
+constexpr double kStrongTrackWithin = 0.0316;
 constexpr std::size_t kMinSharedModes = 3;
 
 struct SharedDecayExcess {
