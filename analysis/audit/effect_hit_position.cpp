@@ -6,13 +6,17 @@
 // better than a gain alone, by enough (bi-cross-validation; rank 0 wins on independent per-mode scatter,
 // which no model can predict). Extension: with an object's mode shapes (a bar or plate parameter set),
 // a hit position per strike; without, a low-rank pattern (loadings per mode fitted on the training
-// strikes, rank chosen by the same bi-cross-validation, a weight per strike its latent value).
+// strikes, rank chosen by the same bi-cross-validation, a weight per strike its latent value), or, where
+// it predicts better, a path through the training strikes' own patterns (a strike placed on or between
+// two of them: the hit point moves along a line, and shapes that bend between strikes are no low rank).
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <limits>
 #include <random>
+#include <string>
 
 #include "analysis/audit/baseline_fit.hpp"
 #include "analysis/audit/contact_spectrum.hpp"
@@ -72,15 +76,16 @@ Residuals residuals(const AuditData& data, const AuditModel& model, const std::v
 }
 
 // Each strike's smooth spectral tilt (1, log f, log^2 f) taken out of its row, and, where the model has a
-// contact, what a slightly longer or shorter contact would change (d ln|G| / d ln tau at the strike's
-// tau): a contact fitted a little off leaves a pattern that is not a hit point.
+// contact, what a slightly longer or shorter contact would change to second order (d ln|G| / d ln tau
+// and d^2 ln|G| / d (ln tau)^2 at the strike's tau): a contact fitted a little off leaves a pattern that
+// is not a hit point, and past a strong contact's first zeros the first order alone does not hold it.
 Eigen::MatrixXd without_tilt(const Eigen::MatrixXd& ln, const AuditModel& model, const std::vector<std::size_t>& modes,
                              const std::vector<std::size_t>& strikes) {
   Eigen::MatrixXd out = ln;
   for (Eigen::Index i = 0; i < ln.rows(); ++i) {
     const std::size_t s = strikes[std::size_t(i)];
     const double tau = model.contact_s.empty() ? 0.0 : model.contact_s[s];
-    Eigen::MatrixXd basis(ln.cols(), tau > 0.0 ? 4 : 3);
+    Eigen::MatrixXd basis(ln.cols(), tau > 0.0 ? 5 : 3);
     for (Eigen::Index j = 0; j < ln.cols(); ++j) {
       const std::size_t n = modes[std::size_t(j)];
       const double f = model.modes[n].freq_hz, x = std::log(f / 1000.0);
@@ -91,6 +96,7 @@ Eigen::MatrixXd without_tilt(const Eigen::MatrixXd& ln, const AuditModel& model,
         const double d = strike_decay(model, s, n);
         const auto g = [&](double t) { return std::log(std::max(contact_gain(model.contact_shape, t, d, f), 1e-6)); };
         basis(j, 3) = (g(1.1 * tau) - g(tau / 1.1)) / (2.0 * std::log(1.1));
+        basis(j, 4) = (g(1.1 * tau) - 2.0 * g(tau) + g(tau / 1.1)) / (std::log(1.1) * std::log(1.1));
       }
     }
     const Eigen::MatrixXd projector = basis * basis.completeOrthogonalDecomposition().pseudoInverse();
@@ -189,49 +195,95 @@ Placed place(const Eigen::VectorXd& x, const Eigen::MatrixXd& shapes, const std:
   return best;
 }
 
+// Adds the errors of predicting each half of a strike's modes x from the other half, with the strike
+// placed (and its gain chosen) among `shapes` on the first half; no shapes: a gain alone.
+void add_placed_half_errors(const Eigen::VectorXd& x, const Eigen::MatrixXd& shapes, double& sse, std::size_t& count) {
+  for (int half = 0; half < 2 * kSplits; ++half) {
+    std::vector<Eigen::Index> fit, predict;
+    for (Eigen::Index j = 0; j < x.size(); ++j) (in_first_half(j, half / 2) == (half % 2 == 0) ? fit : predict).push_back(j);
+    if (fit.size() < 2 || predict.empty()) continue;
+    const Placed at = place(x, shapes, fit);
+    for (Eigen::Index j : predict) {
+      const double e = x(j) - at.gain - (at.position >= 0 ? shapes(at.position, j) : 0.0);
+      sse += e * e;
+      ++count;
+    }
+  }
+}
+
 // Hit positions: each strike's position and gain chosen on one half of its modes predict the other
 // half (nothing is learnt from the other strikes: the object's shapes are given). No shapes: a gain alone.
 double held_out_half_mse_object(const Eigen::MatrixXd& ln, const Eigen::MatrixXd& shapes) {
   double sse = 0.0;
   std::size_t count = 0;
-  for (Eigen::Index k = 0; k < ln.rows(); ++k) {
-    const Eigen::VectorXd x = ln.row(k).transpose();
-    for (int half = 0; half < 2 * kSplits; ++half) {
-      std::vector<Eigen::Index> fit, predict;
-      for (Eigen::Index j = 0; j < ln.cols(); ++j) (in_first_half(j, half / 2) == (half % 2 == 0) ? fit : predict).push_back(j);
-      if (fit.size() < 2 || predict.empty()) continue;
-      const Placed at = place(x, shapes, fit);
-      for (Eigen::Index j : predict) {
-        const double e = x(j) - at.gain - (at.position >= 0 ? shapes(at.position, j) : 0.0);
-        sse += e * e;
-        ++count;
+  for (Eigen::Index k = 0; k < ln.rows(); ++k) add_placed_half_errors(ln.row(k).transpose(), shapes, sse, count);
+  return count ? sse / double(count) : 0.0;
+}
+
+// The points of a path through `rows` strikes' patterns: each strike's own, and a quarter, half and
+// three quarters of the way from each to each other (rows: points, columns: weights summing to 1).
+// Where the hit point moves along a line, strikes that land near each other sound alike even where the
+// mode shapes bend too much between them for any low-rank pattern (five strikes, upper modes passing
+// a node); under independent per-mode scatter a neighbour's pattern carries its own scatter, and a
+// gain alone predicts better.
+Eigen::MatrixXd path_weights(Eigen::Index rows) {
+  constexpr double kSteps[] = {0.25, 0.5, 0.75};
+  Eigen::MatrixXd w = Eigen::MatrixXd::Zero(rows + 3 * rows * (rows - 1) / 2, rows);
+  Eigen::Index p = 0;
+  for (Eigen::Index a = 0; a < rows; ++a) w(p++, a) = 1.0;
+  for (Eigen::Index a = 0; a < rows; ++a)
+    for (Eigen::Index b = a + 1; b < rows; ++b)
+      for (double t : kSteps) {
+        w(p, a) = 1.0 - t;
+        w(p++, b) = t;
       }
-    }
+  return w;
+}
+
+// A held-out strike placed on the path through the other strikes' patterns (bi-cross-validation as above).
+double held_out_half_mse_path(const Eigen::MatrixXd& ln) {
+  const Eigen::Index strikes = ln.rows();
+  const Eigen::MatrixXd weights = path_weights(strikes - 1);
+  double sse = 0.0;
+  std::size_t count = 0;
+  for (Eigen::Index k = 0; k < strikes; ++k) {
+    Eigen::MatrixXd train(strikes - 1, ln.cols());
+    for (Eigen::Index s = 0, i = 0; s < strikes; ++s)
+      if (s != k) train.row(i++) = ln.row(s);
+    add_placed_half_errors(ln.row(k).transpose(), weights * train, sse, count);
   }
   return count ? sse / double(count) : 0.0;
 }
 
 struct PatternChoice {
-  std::size_t rank = 0;
+  std::size_t rank = 0;  // low-rank patterns
+  bool path = false;     // a path through the strikes instead
   double gain_only_rms = 0.0, pattern_rms = 0.0;  // held-out-half RMS, natural-log units
+  bool found() const { return path || rank > 0; }
 };
 
-// The rank with the smallest held-out-half error (0: a gain alone), up to what the strikes and modes allow.
-PatternChoice choose_rank(const Eigen::MatrixXd& ln) {
+// The rank with the smallest held-out-half error (0: a gain alone), up to what the strikes and modes
+// allow, or the path through the strikes where it predicts better still.
+constexpr Eigen::Index kMinPathStrikes = 4;  // a held-out strike placed among three others at least
+PatternChoice choose_pattern(const Eigen::MatrixXd& ln) {
   PatternChoice c;
   c.gain_only_rms = c.pattern_rms = std::sqrt(held_out_half_mse(ln, 0));
   const std::size_t most = std::min({kMaxRank, std::size_t(std::max<Eigen::Index>(ln.rows() - 2, 0)),
                                      std::size_t(std::max<Eigen::Index>(ln.cols() / 2 - 2, 0))});
   for (std::size_t r = 1; r <= most; ++r)
-    if (const double rms = std::sqrt(held_out_half_mse(ln, r)); rms < c.pattern_rms) c = {r, c.gain_only_rms, rms};
+    if (const double rms = std::sqrt(held_out_half_mse(ln, r)); rms < c.pattern_rms) c = {r, false, c.gain_only_rms, rms};
+  if (ln.rows() >= kMinPathStrikes)
+    if (const double rms = std::sqrt(held_out_half_mse_path(ln)); rms < c.pattern_rms) c = {0, true, c.gain_only_rms, rms};
   return c;
 }
 
 // What the best pattern gains on the same residuals with every strike's modes shuffled among
 // themselves (the largest of kShuffles draws): a pattern shared by the strikes is gone, each strike's
-// own scatter stays. A shared pattern must predict better than any of these.
+// own scatter stays. A shared pattern must predict better than any of these. The shuffled rows go
+// through the detector's own processing (`taken_out`: tilt and contact removed), so that what that
+// projection alone leaves predictable (few modes, many terms removed) is in the null too.
 constexpr int kShuffles = 39;  // a shared pattern beats all of them: p < 1/40 under independent scatter
-double scatter_improvement_db(const Eigen::MatrixXd& ln) {
+double scatter_improvement_db(const Eigen::MatrixXd& ln, const std::function<Eigen::MatrixXd(const Eigen::MatrixXd&)>& taken_out) {
   Eigen::MatrixXd centred = ln.rowwise() - ln.colwise().mean();
   centred = centred.colwise() - centred.rowwise().mean();
   std::mt19937_64 rng(0x5ca77e4ULL);
@@ -244,7 +296,7 @@ double scatter_improvement_db(const Eigen::MatrixXd& ln) {
       std::shuffle(row.begin(), row.end(), rng);
       for (Eigen::Index j = 0; j < shuffled.cols(); ++j) shuffled(s, j) = row[std::size_t(j)];
     }
-    const PatternChoice c = choose_rank(shuffled);
+    const PatternChoice c = choose_pattern(taken_out(shuffled));
     most = std::max(most, kDbPerNeper * (c.gain_only_rms - c.pattern_rms));
   }
   return most;
@@ -259,6 +311,7 @@ Eigen::MatrixXd shapes_on(const AuditModel& model, const std::vector<std::size_t
 }
 
 void clear_pattern(HitPattern& hit) {
+  hit.on_path = false;
   hit.loading.clear();
   hit.coord.clear();
   hit.strike_position.clear();
@@ -283,17 +336,19 @@ void extend(const AuditData& data, AuditModel& model, const std::vector<std::siz
     for (std::size_t i = 0; i < train.size(); ++i)
       model.hit.strike_position[train[i]] = std::size_t(place(r.ln.row(Eigen::Index(i)).transpose(), shapes, every).position);
   } else {
-    const std::size_t rank = choose_rank(r.ln).rank;
-    if (rank == 0) return;
+    const PatternChoice c = choose_pattern(r.ln);
+    if (!c.found()) return;
     Eigen::MatrixXd centred = r.ln.rowwise() - r.ln.colwise().mean();
     centred = centred.colwise() - centred.rowwise().mean();
-    const Eigen::MatrixXd load = loadings(centred, rank);
+    const Eigen::MatrixXd load = c.path ? Eigen::MatrixXd(r.ln.transpose()) : loadings(centred, c.rank);
+    model.hit.on_path = c.path;
     model.hit.loading.assign(model.modes.size(), std::vector<double>(std::size_t(load.cols()), 0.0));
     for (std::size_t j = 0; j < r.modes.size(); ++j)
       for (Eigen::Index k = 0; k < load.cols(); ++k) model.hit.loading[r.modes[j]][std::size_t(k)] = load(Eigen::Index(j), k);
     model.hit.coord.assign(data.strike_count(), std::vector<double>(std::size_t(load.cols()), 0.0));
     for (std::size_t i = 0; i < train.size(); ++i) {
-      const Eigen::RowVectorXd w = centred.row(Eigen::Index(i)) * load;
+      const Eigen::RowVectorXd w =
+          c.path ? Eigen::RowVectorXd(Eigen::RowVectorXd::Unit(load.cols(), Eigen::Index(i))) : Eigen::RowVectorXd(centred.row(Eigen::Index(i)) * load);
       model.hit.coord[train[i]].assign(w.data(), w.data() + w.size());
     }
   }
@@ -315,6 +370,12 @@ void adapt(const AuditData& data, AuditModel& model, std::size_t s) {
   Eigen::MatrixXd load(Eigen::Index(r.modes.size()), Eigen::Index(model.hit.rank()));
   for (std::size_t j = 0; j < r.modes.size(); ++j)
     for (std::size_t k = 0; k < model.hit.rank(); ++k) load(Eigen::Index(j), Eigen::Index(k)) = model.hit.loading[r.modes[j]][k];
+  if (model.hit.on_path) {
+    const Eigen::MatrixXd weights = path_weights(load.cols());
+    const Eigen::RowVectorXd w = weights.row(place(x, weights * load.transpose(), every).position);
+    model.hit.coord[s].assign(w.data(), w.data() + w.size());
+    return;
+  }
   const Eigen::VectorXd c = fit_row(x, load, every);
   model.hit.coord[s].assign(c.data() + 1, c.data() + c.size());
 }
@@ -332,20 +393,24 @@ Detection detect(const AuditData& data, const AuditModel& current) {
     c.pattern_rms = std::sqrt(held_out_half_mse_object(r.ln, shapes_on(current, r.modes)));
     c.rank = c.pattern_rms < c.gain_only_rms ? 1 : 0;
   } else {
-    c = choose_rank(without_tilt(r.ln, current, r.modes, r.strikes));
+    c = choose_pattern(without_tilt(r.ln, current, r.modes, r.strikes));
   }
   d.statistic = kDbPerNeper * (c.gain_only_rms - c.pattern_rms);
-  const double null_db = current.hit.from_object() ? 0.0 : scatter_improvement_db(without_tilt(r.ln, current, r.modes, r.strikes));
-  d.passes = c.rank >= 1 && d.statistic >= kMinImprovementDb && d.statistic > null_db &&
+  const double null_db =
+      current.hit.from_object() ? 0.0
+                                : scatter_improvement_db(r.ln, [&](const Eigen::MatrixXd& ln) { return without_tilt(ln, current, r.modes, r.strikes); });
+  d.passes = c.found() && d.statistic >= kMinImprovementDb && d.statistic > null_db &&
              data.strike_variation_db >= kMinStrikeVariationDb;
-  char buf[400];
+  const std::string shared = current.hit.from_object() ? "in the pattern of the object's mode shapes at a moving hit point"
+                             : c.path ? "and strikes that land near each other sound alike (a path through the other strikes' patterns)"
+                             : c.rank == 1 ? "in one pattern the strikes share"
+                                           : "in " + std::to_string(c.rank) + " patterns the strikes share";
+  char buf[512];
   std::snprintf(buf, sizeof buf,
-                "the modes' amplitudes change from strike to strike by more than a gain and a spectral tilt, in %s "
-                "the strikes share: fitted on half of a held-out strike's %zu modes it predicts the other half to "
-                "%.2f dB RMS instead of %.2f dB with a gain alone (shuffled modes: at most %.2f dB better)",
-                current.hit.from_object() ? "the pattern of the object's mode shapes at a moving hit point"
-                                          : (c.rank == 1 ? "one pattern" : (std::to_string(c.rank) + " patterns").c_str()),
-                r.modes.size(), kDbPerNeper * c.pattern_rms, kDbPerNeper * c.gain_only_rms, null_db);
+                "the modes' amplitudes change from strike to strike by more than a gain and a spectral tilt, %s: "
+                "fitted on half of a held-out strike's %zu modes it predicts the other half to %.2f dB RMS instead "
+                "of %.2f dB with a gain alone (shuffled modes: at most %.2f dB better)",
+                shared.c_str(), r.modes.size(), kDbPerNeper * c.pattern_rms, kDbPerNeper * c.gain_only_rms, null_db);
   d.evidence = buf;
   return d;
 }
@@ -370,7 +435,7 @@ Parameters parameters(const AuditData& data, const AuditModel& model) {
     p.push_back({"position_min", lo});
     p.push_back({"position_max", hi});
   } else {
-    p.push_back({"rank", double(model.hit.rank())});
+    p.push_back({model.hit.on_path ? "path_strikes" : "rank", double(model.hit.rank())});
   }
   return p;
 }

@@ -2,7 +2,10 @@
 // point), so from strike to strike the modes' amplitudes change by more than a common gain. The pattern
 // multiplies mode n's amplitude in strike s by exp(l[s][n]), l in natural-log units, from one of:
 //  - an object's mode shapes: l[s][n] = shape_ln[p_s][n], p_s the strike's hit position on a grid;
-//  - a low-rank pattern (no geometry known): l[s][n] = sum_k coord[s][k] loading[n][k].
+//  - a low-rank pattern (no geometry known): l[s][n] = sum_k coord[s][k] loading[n][k];
+//  - a path through the strikes (no geometry known, the hit point moving along a line the mode shapes
+//    bend): the same sum, its loadings the training strikes' own patterns and each strike's weights
+//    placing it on or between two of them (weights summing to 1).
 #pragma once
 #include <cstddef>
 #include <vector>
@@ -13,6 +16,7 @@ struct HitPattern {
   // Low rank: loading[n][k] (mode n's response to pattern k), coord[s][k] (strike s's weight of it).
   std::vector<std::vector<double>> loading;
   std::vector<std::vector<double>> coord;
+  bool on_path = false;  // the loadings are the training strikes' patterns; a strike sits between two
   // Object: the hit positions of the grid (fraction of the length or radius), the log amplitude of
   // every mode at each relative to the parameter set's own hit, and each strike's fitted position.
   std::vector<double> positions;

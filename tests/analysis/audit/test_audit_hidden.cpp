@@ -22,11 +22,12 @@ namespace {
 // effect (the in-sample gap is printed: beside a room or a moving hit point part of it is repetition,
 // which no model closes).
 constexpr double kNamedBar = 0.9, kQuietBar = 0.9, kGapShrinkBar = 0.9;
-// hit_position falls short of the bar here, measured: without an object's mode shapes the audit looks
-// for a low-rank pattern, and five strikes whose hit points move by up to a radian of the upper modes'
-// shapes are no such pattern (4 training strikes, log amplitudes a curved path): 18 of 27 named on
-// 13000-13239. This floor keeps what holds from slipping; it is not the bar.
-constexpr double kHitPositionNamedFloor = 0.6;
+// hit_position falls just short of the bar here, measured: 24 of 27 named on 13000-13239 (89 %). The
+// misses: one alone whose five strikes neither a low-rank pattern nor a path through the other strikes
+// predicts (statistic 0.67 dB, under the shuffles' null), and two beside a room or a damping law whose
+// pattern is not found once that effect is named. This floor keeps what holds from slipping; it is not
+// the bar.
+constexpr double kHitPositionNamedFloor = 0.85;
 
 audit::AuditResult audit_case(const CasePlan& plan) {
   const audit::HiddenCase hc = audit::generate_hidden_case(plan.seed, plan.effects, plan.strengths);
@@ -48,13 +49,16 @@ void print_case(const CasePlan& plan, const audit::AuditResult& r) {
 }
 
 // Threshold tuning run (disabled: run with --gtest_also_run_disabled_tests): every statistic per case.
-// AUDIT_TUNING_FIRST / AUDIT_TUNING_COUNT pick the seeds (default 1000, 60; also tuned: 1100, 80).
+// AUDIT_TUNING_FIRST / AUDIT_TUNING_COUNT pick the seeds (default 1000, 60; also tuned: 1100, 80);
+// AUDIT_TUNING_ONLY=effect hides that effect in every case, at strength 0.1 + 0.2 (seed mod 5).
 TEST(AuditHidden, DISABLED_AuditTuning) {
   Tally tally;
   const std::size_t first = env_or("AUDIT_TUNING_FIRST", 1000);
   const std::size_t count = env_or("AUDIT_TUNING_COUNT", 60);
+  const char* only = std::getenv("AUDIT_TUNING_ONLY");
   for (std::size_t i = 0; i < count; ++i) {
-    const CasePlan plan = plan_case(first + i, i, true);
+    CasePlan plan = plan_case(first + i, i, true);
+    if (only) plan = {first + i, {only}, {0.1 + 0.2 * double((first + i) % 5)}};
     const auto r = audit_case(plan);
     print_case(plan, r);
     tally.add(plan, r);

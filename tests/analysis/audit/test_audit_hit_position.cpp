@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "analysis/audit/audit.hpp"
@@ -34,14 +35,44 @@ void print(const char* what, const AuditResult& r) {
   std::printf("\n");
 }
 
+// The parameters hit_position is named with, first, closing half the gap above the floor or more, on
+// generated hit points of the strength given (empty when it is not named first).
+Parameters named_first_closing_half(std::uint64_t seed, double strength) {
+  const HiddenCase hc = generate_hidden_case(seed, {"hit_position"}, {strength});
+  const AuditResult r = run_audit(make_audit_data(hc.recordings));
+  print(hc.summary.c_str(), r);
+  EXPECT_GE(r.share_above_floor, 0.5) << "seed " << seed;
+  if (r.named.empty() || r.named.front().effect != "hit_position") {
+    ADD_FAILURE() << "seed " << seed << ": hit_position not named first";
+    return {};
+  }
+  return r.named.front().parameters;
+}
+
 TEST(AuditHitPosition, GeneratedHitPointsAreNamedAndCloseTheGapAboveTheFloor) {
-  for (std::uint64_t seed : {41u, 42u, 43u}) {
-    const HiddenCase hc = generate_hidden_case(seed, {"hit_position"}, {0.6});
+  for (std::uint64_t seed : {41u, 42u, 43u}) EXPECT_FALSE(named_first_closing_half(seed, 0.6).empty());
+}
+
+// Hit points spread over a fifth of the length carry the upper modes past nodes between strikes: five
+// strikes then trace a bent path no low-rank pattern of four training strikes predicts (tuning seeds
+// where the low rank found nothing). A strike placed between the two others it sounds most like does.
+TEST(AuditHitPosition, HitPointsSweepingPastNodesAreNamedAsAPathThroughTheStrikes) {
+  for (std::uint64_t seed : {1004u, 1019u, 1024u}) {
+    const Parameters p = named_first_closing_half(seed, 0.9);
+    EXPECT_TRUE(std::any_of(p.begin(), p.end(), [](const auto& kv) { return kv.first == "path_strikes"; })) << seed;
+  }
+}
+
+// A strong contact fitted a little off leaves a pattern that follows the strike gains; taken out to
+// second order in the contact's length, it is no hit point (tuning seeds that named one after the contact).
+TEST(AuditHitPosition, AContactFittedALittleOffIsNoHitPoint) {
+  for (auto [seed, u] : {std::pair<std::uint64_t, double>{1007u, 0.5}, {1012u, 0.5}, {1029u, 0.9}}) {
+    const HiddenCase hc = generate_hidden_case(seed, {"contact_duration"}, {u});
     const AuditResult r = run_audit(make_audit_data(hc.recordings));
     print(hc.summary.c_str(), r);
     ASSERT_FALSE(r.named.empty());
-    EXPECT_EQ(r.named.front().effect, "hit_position");
-    EXPECT_GE(r.share_above_floor, 0.5);
+    EXPECT_EQ(r.named.front().effect, "contact_duration");
+    EXPECT_FALSE(named(r, "hit_position"));
   }
 }
 
