@@ -3,7 +3,8 @@
 //  - tuning: seeds 1000-1059 and 1100-1179, strengths on the grid {0.1, 0.3, 0.5, 0.7, 0.9}; the
 //    detector thresholds in analysis/audit/effect_*.cpp were chosen on these (DISABLED_AuditTuning
 //    prints every statistic);
-//  - test:   seeds 13000-13239, strengths drawn uniformly from (0, 1) off that grid (disjoint).
+//  - test:   seeds 13000-13239, strengths drawn uniformly from (0, 1) off that grid (disjoint);
+//    14000-14239 checked the path through the strikes once (AUDIT_HELDOUT_FIRST) and is spent too.
 //    Earlier held-out ranges (5000-5119, 7000-7159, 8000-8159, 9000-9159, 10000-10239, 11000-11239,
 //    12000-12239) are not reused.
 #pragma once

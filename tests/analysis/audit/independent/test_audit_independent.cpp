@@ -186,7 +186,7 @@ TEST(AuditIndependent, DISABLED_Tuning) {
   EXPECT_GT(tally.clean, 0);
 }
 
-// Held-out seeds 44440-44659 (never used for tuning: not 1000-1179, 5000-13239, 40000-42999; 41000-41219,
+// Held-out seeds 44440-44659 (never used for tuning: not 1000-1179, 5000-14239, 40000-42999; 41000-41219,
 // 43000-43219, 44000-44219 and 44220-44439 held out earlier audits), strengths drawn from (0, 1), in two
 // halves (each 110 cases, 10 of each effect alone, 20 clean, 10 pairs; ~4 min each on two cores): the
 // audit must meet the bars on each half. Disabled because it does not yet: the one run on these seeds
