@@ -66,6 +66,10 @@ struct AuditResult {
   // gap above it that the named effects close together ("the gap halves": >= 0.5).
   double floor_db = 0.0;
   std::vector<double> strike_floor_db;
+  // Per strike, held out: the final recipe fitted on the other strikes, then adapted to it. The in-sample
+  // gap can reach 0 where an effect has a free part per strike (a path through the strikes' own patterns
+  // memorises each); this is the gap it reaches on a strike it has not seen.
+  std::vector<double> strike_cv_gap_after_db;
   double share_above_floor = 0.0;
   std::vector<NamedEffect> named;
   std::vector<std::vector<Candidate>> rounds;

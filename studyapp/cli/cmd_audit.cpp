@@ -57,6 +57,7 @@ nlohmann::json result_json(const AuditResult& r, const audit::AuditData& data) {
   for (std::size_t s = 0; s < r.strikes; ++s)
     strikes.push_back({{"strike", data.measured.strikes[s].name}, {"gap_before", r.location.strike_gap_db[s]},
                        {"gap_after", r.after[s].gap_db}, {"gain_db", r.strike_gain_db[s]},
+                       {"gap_after_held_out", s < r.strike_cv_gap_after_db.size() ? nlohmann::json(r.strike_cv_gap_after_db[s]) : nlohmann::json()},
                        {"floor", r.strike_floor_db[s]}});
   // The three worst Bark bands and the worst frame of the baseline.
   nlohmann::json worst_bands = nlohmann::json::array();
@@ -127,9 +128,12 @@ void write_report(const std::string& dir, const AuditResult& r, const audit::Aud
   o.x_label = "strike";
   o.y_label = "gap [dB]";
   plots::line_plot((d / "gap_per_strike.png").string(),
-                   {per_strike("baseline", [&](std::size_t k) { return r.before[k].gap_db; }, r.strikes),
-                    per_strike("with effects", [&](std::size_t k) { return r.after[k].gap_db; }, r.strikes),
-                    per_strike("repeatability floor", [&](std::size_t k) { return r.strike_floor_db[k]; }, r.strikes)},
+                   {per_strike("baseline (in-sample)", [&](std::size_t k) { return r.before[k].gap_db; }, r.strikes),
+                    per_strike("with effects (in-sample)", [&](std::size_t k) { return r.after[k].gap_db; }, r.strikes),
+                    per_strike("repeatability floor (held out)", [&](std::size_t k) { return r.strike_floor_db[k]; }, r.strikes),
+                    // Drawn last: where it reaches the floor it covers it.
+                    per_strike("with effects (held out)", [&](std::size_t k) { return r.strike_cv_gap_after_db[k]; },
+                               r.strike_cv_gap_after_db.size())},
                    o);
   // Per-mode residuals: amplitude (dB) and decay (%) against frequency, before and after.
   auto series = [](const std::vector<audit::ModeResidual>& res, bool amp, const std::string& name) {

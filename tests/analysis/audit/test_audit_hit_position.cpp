@@ -63,6 +63,19 @@ TEST(AuditHitPosition, HitPointsSweepingPastNodesAreNamedAsAPathThroughTheStrike
   }
 }
 
+// A path memorises each training strike, so the in-sample gap says little; the per-strike held-out gap
+// the report draws is what a strike it has not seen keeps, and averages to the held-out gap.
+TEST(AuditHitPosition, APathsHeldOutGapPerStrikeIsReportedBesideItsInSampleOne) {
+  const HiddenCase hc = generate_hidden_case(1004, {"hit_position"}, {0.9});
+  const AuditResult r = run_audit(make_audit_data(hc.recordings));
+  ASSERT_EQ(r.strike_cv_gap_after_db.size(), r.strikes);
+  double sum = 0.0;
+  for (double g : r.strike_cv_gap_after_db) sum += g;
+  EXPECT_NEAR(sum / double(r.strikes), r.cv_gap_after_db, 1e-9);
+  EXPECT_LT(r.gap_after_db, 0.1);                         // in-sample: each strike its own pattern
+  EXPECT_GT(r.cv_gap_after_db, r.gap_after_db + 1.0);     // held out: the floor's share remains
+}
+
 // A strong contact fitted a little off leaves a pattern that follows the strike gains; taken out to
 // second order in the contact's length, it is no hit point (tuning seeds that named one after the contact).
 TEST(AuditHitPosition, AContactFittedALittleOffIsNoHitPoint) {
