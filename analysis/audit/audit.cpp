@@ -200,7 +200,7 @@ AuditResult run_audit(const AuditData& data, const std::optional<ModalModel>& gi
   const RepeatabilityFloor repeatability = repeatability_floor(data, folds);
   result.floor_db = repeatability.floor_db;
   result.strike_floor_db = repeatability.strike_floor_db;
-  for (std::size_t k = 0; k < folds.size(); ++k) result.strike_cv_gap_after_db.push_back(strike_gap(folds[k], data, k).gap_db);
+  result.strike_cv_gap_after_db = repeatability.strike_gap_db;
   result.share_above_floor = share_above_floor(result.cv_gap_before_db - cv, result.cv_gap_before_db, repeatability.floor_db);
   for (NamedEffect& n : result.named)
     n.share_above_floor = share_above_floor(n.cv_improvement_db, result.cv_gap_before_db, repeatability.floor_db);

@@ -37,6 +37,7 @@ RepeatabilityFloor repeatability_floor(const AuditData& data, const std::vector<
     const AuditModel& model = fold_models[k];
     Spectra best = predict_spectra(model, data, k);
     const double plain_gap_db = gap_map(data.measured.strikes[k].spectra, best).gap_db;
+    out.strike_gap_db.push_back(plain_gap_db);
     // dB residual of the training strikes per cell, each clamped below its own measured peak: its mean,
     // shrunk towards 0 by the positive-part James-Stein factor 1 - (standard error / mean)^2, so that
     // residuals the strikes do not agree on (each strike's own scatter) stay out of the best model.

@@ -18,6 +18,7 @@ namespace ms::audit {
 struct RepeatabilityFloor {
   double floor_db = 0.0;                // mean over the folds (dB, the gap metric)
   std::vector<double> strike_floor_db;  // per held-out strike
+  std::vector<double> strike_gap_db;    // per held-out strike, the fold's own model (the held-out gap)
 };
 
 // Leave-one-strike-out over every strike (needs at least 2).
