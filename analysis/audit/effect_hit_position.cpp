@@ -34,6 +34,14 @@ constexpr double kDbPerNeper = 8.685889638065035;
 // would dominate every fit. Residuals are read within -+13 dB.
 constexpr double kMaxResidualLn = 1.5;
 
+// No hit pattern: every strike's modes at the set's amplitudes (the object's grid, if any, stays).
+void clear_pattern(HitPattern& hit) {
+  hit.on_path = false;
+  hit.loading.clear();
+  hit.coord.clear();
+  hit.strike_position.clear();
+}
+
 // The modes' log-amplitude residuals ln(measured / model without a hit pattern) on the strikes given:
 // rows strikes, columns the modes present in all of them and within kWithinDb of the strongest.
 struct Residuals {
@@ -43,9 +51,7 @@ struct Residuals {
 
 Residuals residuals(const AuditData& data, const AuditModel& model, const std::vector<std::size_t>& strikes) {
   AuditModel plain = model;
-  plain.hit.loading.clear();
-  plain.hit.coord.clear();
-  plain.hit.strike_position.clear();
+  clear_pattern(plain.hit);
   Residuals r;
   r.strikes = strikes;
   double strongest = 0.0;
@@ -117,6 +123,13 @@ bool in_first_half(Eigen::Index j, int split) {
   }
 }
 
+// Rows with each mode's mean over the rows, then each row's own mean, taken out: what a pattern beyond
+// the set's amplitudes and each strike's gain must explain.
+Eigen::MatrixXd double_centred(const Eigen::MatrixXd& ln) {
+  const Eigen::MatrixXd by_mode = ln.rowwise() - ln.colwise().mean();
+  return by_mode.colwise() - by_mode.rowwise().mean();
+}
+
 // The first `rank` pattern loadings (columns) of rows whose per-mode mean is taken out.
 Eigen::MatrixXd loadings(const Eigen::MatrixXd& centred, std::size_t rank) {
   if (rank == 0 || centred.rows() == 0) return Eigen::MatrixXd(centred.cols(), 0);
@@ -136,6 +149,14 @@ Eigen::VectorXd fit_row(const Eigen::VectorXd& x, const Eigen::MatrixXd& load, c
   return a.colPivHouseholderQr().solve(b);
 }
 
+// The rows of ln other than row k (the strikes a held-out strike k learns from).
+Eigen::MatrixXd without_row(const Eigen::MatrixXd& ln, Eigen::Index k) {
+  Eigen::MatrixXd out(ln.rows() - 1, ln.cols());
+  for (Eigen::Index s = 0, i = 0; s < ln.rows(); ++s)
+    if (s != k) out.row(i++) = ln.row(s);
+  return out;
+}
+
 // Mean squared error (natural-log units) of predicting each held-out strike's modes of one half from
 // the other half with a rank-`rank` pattern learnt on the other strikes (bi-cross-validation).
 double held_out_half_mse(const Eigen::MatrixXd& ln, std::size_t rank) {
@@ -143,13 +164,9 @@ double held_out_half_mse(const Eigen::MatrixXd& ln, std::size_t rank) {
   double sse = 0.0;
   std::size_t count = 0;
   for (Eigen::Index k = 0; k < strikes; ++k) {
-    Eigen::MatrixXd train(strikes - 1, modes);
-    for (Eigen::Index s = 0, i = 0; s < strikes; ++s)
-      if (s != k) train.row(i++) = ln.row(s);
+    const Eigen::MatrixXd train = without_row(ln, k);
     const Eigen::RowVectorXd shape = train.colwise().mean();
-    Eigen::MatrixXd centred = train.rowwise() - shape;
-    centred = centred.colwise() - centred.rowwise().mean();
-    const Eigen::MatrixXd load = loadings(centred, rank);
+    const Eigen::MatrixXd load = loadings(double_centred(train), rank);
     const Eigen::VectorXd x = (ln.row(k) - shape).transpose();
     for (int half = 0; half < 2 * kSplits; ++half) {
       std::vector<Eigen::Index> fit, predict;
@@ -247,10 +264,7 @@ double held_out_half_mse_path(const Eigen::MatrixXd& ln) {
   double sse = 0.0;
   std::size_t count = 0;
   for (Eigen::Index k = 0; k < strikes; ++k) {
-    Eigen::MatrixXd train(strikes - 1, ln.cols());
-    for (Eigen::Index s = 0, i = 0; s < strikes; ++s)
-      if (s != k) train.row(i++) = ln.row(s);
-    add_placed_half_errors(ln.row(k).transpose(), weights * train, sse, count);
+    add_placed_half_errors(ln.row(k).transpose(), weights * without_row(ln, k), sse, count);
   }
   return count ? sse / double(count) : 0.0;
 }
@@ -284,8 +298,7 @@ PatternChoice choose_pattern(const Eigen::MatrixXd& ln) {
 // projection alone leaves predictable (few modes, many terms removed) is in the null too.
 constexpr int kShuffles = 39;  // a shared pattern beats all of them: p < 1/40 under independent scatter
 double scatter_improvement_db(const Eigen::MatrixXd& ln, const std::function<Eigen::MatrixXd(const Eigen::MatrixXd&)>& taken_out) {
-  Eigen::MatrixXd centred = ln.rowwise() - ln.colwise().mean();
-  centred = centred.colwise() - centred.rowwise().mean();
+  const Eigen::MatrixXd centred = double_centred(ln);
   std::mt19937_64 rng(0x5ca77e4ULL);
   double most = 0.0;
   std::vector<double> row(std::size_t(ln.cols()));
@@ -310,13 +323,6 @@ Eigen::MatrixXd shapes_on(const AuditModel& model, const std::vector<std::size_t
   return m;
 }
 
-void clear_pattern(HitPattern& hit) {
-  hit.on_path = false;
-  hit.loading.clear();
-  hit.coord.clear();
-  hit.strike_position.clear();
-}
-
 void refit_shapes_and_gains(const AuditData& data, AuditModel& model, const std::vector<std::size_t>& train) {
   if (model.law_fitted) fit_amplitudes(model, data, train);
   else for (std::size_t s : train) fit_gain(model, data, s);
@@ -338,8 +344,7 @@ void extend(const AuditData& data, AuditModel& model, const std::vector<std::siz
   } else {
     const PatternChoice c = choose_pattern(r.ln);
     if (!c.found()) return;
-    Eigen::MatrixXd centred = r.ln.rowwise() - r.ln.colwise().mean();
-    centred = centred.colwise() - centred.rowwise().mean();
+    const Eigen::MatrixXd centred = double_centred(r.ln);
     const Eigen::MatrixXd load = c.path ? Eigen::MatrixXd(r.ln.transpose()) : loadings(centred, c.rank);
     model.hit.on_path = c.path;
     model.hit.loading.assign(model.modes.size(), std::vector<double>(std::size_t(load.cols()), 0.0));
