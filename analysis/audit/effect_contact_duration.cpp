@@ -231,14 +231,16 @@ Detection detect(const AuditData& data, const AuditModel& current) {
   for (const AuditMode& m : with.modes)
     in_main_lobe += m.track >= 0 && lo > 0.0 && m.freq_hz < first_zero_hz(with.contact_shape, lo);
   const Brightening bright = brightening(data, current, lo > 0.0 ? first_zero_hz(with.contact_shape, hi) : 0.0);
-  d.passes = d.statistic >= kMinImprovementDb && with.contact_exponent > 0.05 && order >= 0.7 && bright.db_per_db > 0.0 &&
-             data.strike_variation_db >= kMinStrikeVariationDb && in_main_lobe >= kMinModesInMainLobe;
+  d.passes = d.statistic >= kMinImprovementDb && with.contact_exponent > 0.05 && order >= 0.7 &&
+             bright.db_per_db > 0.0 && data.strike_variation_db >= kMinStrikeVariationDb &&
+             in_main_lobe >= kMinModesInMainLobe;
   char buf[500];
   std::snprintf(buf, sizeof buf, "high modes are weaker than an impulse gives and vary with the strike: contacts of "
                 "%.2f-%.2f ms (%s) explain the mode amplitudes to %.1f dB RMS instead of %.1f dB, shorter in %.0f %% "
                 "of harder strikes; %zu modes below the hardest contact's first spectral zero; the modes above %.0f Hz "
-                "gain %+.2f dB per dB of strike gain on those below", lo * 1e3, hi * 1e3, to_string(with.contact_shape).c_str(),
-                after, before, 100.0 * order, in_main_lobe, bright.split_hz, bright.db_per_db);
+                "gain %+.2f dB per dB of strike gain on those below", lo * 1e3, hi * 1e3,
+                to_string(with.contact_shape).c_str(), after, before, 100.0 * order, in_main_lobe, bright.split_hz,
+                bright.db_per_db);
   d.evidence = buf;
   return d;
 }

@@ -23,8 +23,9 @@ namespace {
 // which no model closes).
 constexpr double kNamedBar = 0.9, kQuietBar = 0.9, kGapShrinkBar = 0.9;
 // hit_position falls short of the bar here, measured: 24 of 27 named on 13000-13239 (89 %), 20 of 24 on
-// 14000-14239 (83 %), 23 of 26 on 15000-15239 (88 %). The misses alone are five strikes that neither a low-rank pattern nor a path
-// through the other strikes predicts better than the shuffles' null (13119: 0.67 dB against 0.83 dB);
+// 14000-14239 (83 %), 23 of 26 on 15000-15239 (88 %). The misses alone are strikes that neither a
+// low-rank pattern nor a path through the other strikes predicts better than the shuffles' null
+// (13119: 0.67 dB against 0.83 dB);
 // the others sit beside an effect named first (a room, a damping law, a burst). This floor keeps what
 // holds from slipping; it is not the bar.
 constexpr double kHitPositionNamedFloor = 0.8;

@@ -48,7 +48,8 @@ Tally independent_tally() {
 void print_case(const CasePlan& plan, const indep::IndependentCase& c, const audit::AuditResult& r, double seconds) {
   std::printf("%s\n  strengths:", c.summary.c_str());
   // Every digit of a strength: INDEPENDENT_DUMP can then make the same case again.
-  for (std::size_t i = 0; i < plan.effects.size(); ++i) std::printf(" %s(%.17g)", plan.effects[i].c_str(), plan.strengths[i]);
+  for (std::size_t i = 0; i < plan.effects.size(); ++i)
+    std::printf(" %s(%.17g)", plan.effects[i].c_str(), plan.strengths[i]);
   std::printf(" | gap %.2f -> %.2f (held-out %.2f -> %.2f) | floor %.2f, share above it %.2f | %.1f s | named:",
               r.gap_before_db, r.gap_after_db, r.cv_gap_before_db, r.cv_gap_after_db, r.floor_db, r.share_above_floor,
               seconds);
@@ -129,7 +130,6 @@ TEST(AuditIndependent, DISABLED_Dump) {
     write_wav(std::string(dir) + "/" + r.name + ".wav", a, SampleFormat::float32);
   }
   std::printf("%s\n", c.summary.c_str());
-  // INDEPENDENT_DUMP_AUDIT: also the audit of the recordings as generated (the files are float32).
   if (std::getenv("INDEPENDENT_DUMP_AUDIT") == nullptr) return;
   const audit::AuditData data = audit::make_audit_data(c.recordings);
   std::size_t observed = 0;
@@ -149,7 +149,8 @@ TEST(AuditIndependent, DISABLED_Dump) {
   for (std::size_t round = 0; round < r.rounds.size(); ++round)
     for (const audit::Candidate& k : r.rounds[round])
       if (k.detector_passes)
-        std::printf("  round %zu %-18s improvement %.2f dB: %.160s\n", round, k.effect.c_str(), k.improvement_db, k.note.c_str());
+        std::printf("  round %zu %-18s improvement %.2f dB: %.160s\n", round, k.effect.c_str(), k.improvement_db,
+                    k.note.c_str());
   std::printf("  named:");
   for (const auto& n : r.named) std::printf(" %s", n.effect.c_str());
   std::printf("\n");
