@@ -114,7 +114,7 @@ AuditResult run_audit(const AuditData& data, const std::optional<ModalModel>& gi
   AuditModel current;
   double gap = in_sample_gap(data, recipe, &current);
   std::vector<AuditModel> folds;  // the current recipe's fold models (for the repeatability floor)
-  double cv = cross_validated_gap(data, recipe, &folds);
+  double cv = cross_validated_gap(data, recipe, &folds, &result.strike_cv_gap_before_db);
   result.baseline = current;
   result.modes = current.modes.size();
   result.gap_before_db = gap;
@@ -202,6 +202,7 @@ AuditResult run_audit(const AuditData& data, const std::optional<ModalModel>& gi
   result.strike_floor_db = repeatability.strike_floor_db;
   result.strike_cv_gap_after_db = repeatability.strike_gap_db;
   result.share_above_floor = share_above_floor(result.cv_gap_before_db - cv, result.cv_gap_before_db, repeatability.floor_db);
+  result.left_shared = shared_residual(repeatability);
   for (NamedEffect& n : result.named)
     n.share_above_floor = share_above_floor(n.cv_improvement_db, result.cv_gap_before_db, repeatability.floor_db);
   result.before = maps_of(data, result.baseline);

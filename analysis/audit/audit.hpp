@@ -10,6 +10,7 @@
 #include "analysis/audit/audit_model.hpp"
 #include "analysis/audit/cross_validation.hpp"
 #include "analysis/audit/effect_catalog.hpp"
+#include "analysis/audit/repeatability_floor.hpp"
 #include "analysis/audit/strikes.hpp"
 
 namespace ms::audit {
@@ -70,6 +71,10 @@ struct AuditResult {
   // gap can reach 0 where an effect has a free part per strike (a path through the strikes' own patterns
   // memorises each); this is the gap it reaches on a strike it has not seen.
   std::vector<double> strike_cv_gap_after_db;
+  // The baseline's held-out gap per strike; what the strikes still share beyond the final model (not
+  // resolved: nothing they share is missing; what varies per strike may still be).
+  std::vector<double> strike_cv_gap_before_db;
+  SharedResidual left_shared;
   double share_above_floor = 0.0;
   std::vector<NamedEffect> named;
   std::vector<std::vector<Candidate>> rounds;

@@ -24,9 +24,11 @@ AuditModel fit_recipe(const AuditData& data, const Recipe& recipe, const std::ve
   return model;
 }
 
-double cross_validated_gap(const AuditData& data, const Recipe& recipe, std::vector<AuditModel>* fold_models) {
+double cross_validated_gap(const AuditData& data, const Recipe& recipe, std::vector<AuditModel>* fold_models,
+                           std::vector<double>* strike_gaps_db) {
   const std::size_t n = data.strike_count();
   if (fold_models) fold_models->clear();
+  if (strike_gaps_db) strike_gaps_db->clear();
   if (n < 2) return in_sample_gap(data, recipe);
   // The folds stand alone: they run on the machine's cores, and are summed in order.
   std::vector<AuditModel> models(n);
@@ -42,6 +44,7 @@ double cross_validated_gap(const AuditData& data, const Recipe& recipe, std::vec
   double sum = 0.0;
   for (double g : gaps) sum += g;
   if (fold_models) *fold_models = std::move(models);
+  if (strike_gaps_db) *strike_gaps_db = gaps;
   return sum / double(n);
 }
 

@@ -24,8 +24,9 @@ void adapt_strike(const AuditData& data, const Recipe& recipe, AuditModel& model
 
 // Mean held-out gap (dB) over leave-one-strike-out folds; with a single strike the in-sample gap.
 // fold_models (if given) receives fold k's model (fitted without strike k, then given its latent values)
-// for every k.
-double cross_validated_gap(const AuditData& data, const Recipe& recipe, std::vector<AuditModel>* fold_models = nullptr);
+// for every k; strike_gaps_db (if given) strike k's held-out gap.
+double cross_validated_gap(const AuditData& data, const Recipe& recipe, std::vector<AuditModel>* fold_models = nullptr,
+                           std::vector<double>* strike_gaps_db = nullptr);
 
 // In-sample: fitted on every strike, mean gap over every strike.
 double in_sample_gap(const AuditData& data, const Recipe& recipe, AuditModel* fitted = nullptr);

@@ -411,11 +411,18 @@ Detection detect(const AuditData& data, const AuditModel& current) {
                              : c.rank == 1 ? "in one pattern the strikes share"
                                            : "in " + std::to_string(c.rank) + " patterns the strikes share";
   char buf[512];
-  std::snprintf(buf, sizeof buf,
-                "the modes' amplitudes change from strike to strike by more than a gain and a spectral tilt, %s: "
-                "fitted on half of a held-out strike's %zu modes it predicts the other half to %.2f dB RMS instead "
-                "of %.2f dB with a gain alone (shuffled modes: at most %.2f dB better)",
-                shared.c_str(), r.modes.size(), kDbPerNeper * c.pattern_rms, kDbPerNeper * c.gain_only_rms, null_db);
+  if (c.found())
+    std::snprintf(buf, sizeof buf,
+                  "the modes' amplitudes change from strike to strike by more than a gain and a spectral tilt, %s: "
+                  "fitted on half of a held-out strike's %zu modes it predicts the other half to %.2f dB RMS instead "
+                  "of %.2f dB with a gain alone (shuffled modes: at most %.2f dB better)",
+                  shared.c_str(), r.modes.size(), kDbPerNeper * c.pattern_rms, kDbPerNeper * c.gain_only_rms, null_db);
+  else
+    std::snprintf(buf, sizeof buf,
+                  "%s predicts a held-out strike's modes better than a gain alone (fitted on half of its %zu modes, "
+                  "the other half to %.2f dB RMS; shuffled modes: at most %.2f dB better)",
+                  current.hit.from_object() ? "no hit point on the object's mode shapes" : "no pattern the strikes share",
+                  r.modes.size(), kDbPerNeper * c.gain_only_rms, null_db);
   d.evidence = buf;
   return d;
 }

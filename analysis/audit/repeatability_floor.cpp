@@ -72,11 +72,27 @@ RepeatabilityFloor repeatability_floor(const AuditData& data, const std::vector<
     }
     // Residuals that follow a per-strike value (a contact's notches move with the strike) do not carry
     // over to strike k; then the fold's own model is the better model of the others.
-    out.strike_floor_db.push_back(std::min(gap_map(held_out, best).gap_db, plain_gap_db));
+    out.strike_best_db.push_back(gap_map(held_out, best).gap_db);
+    out.strike_floor_db.push_back(std::min(out.strike_best_db.back(), plain_gap_db));
   }
   double sum = 0.0;
   for (double g : out.strike_floor_db) sum += g;
   out.floor_db = sum / double(n);
+  return out;
+}
+
+SharedResidual shared_residual(const RepeatabilityFloor& floor) {
+  const std::size_t n = std::min(floor.strike_gap_db.size(), floor.strike_best_db.size());
+  SharedResidual out;
+  if (n == 0) return out;
+  double sum = 0.0, sum_sq = 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double d = floor.strike_gap_db[k] - floor.strike_best_db[k];
+    sum += d;
+    sum_sq += d * d;
+  }
+  out.mean_db = sum / double(n);
+  if (n > 1) out.standard_error_db = std::sqrt(std::max(0.0, sum_sq / double(n) - out.mean_db * out.mean_db) / double(n - 1));
   return out;
 }
 

@@ -57,6 +57,7 @@ nlohmann::json result_json(const AuditResult& r, const audit::AuditData& data) {
   for (std::size_t s = 0; s < r.strikes; ++s)
     strikes.push_back({{"strike", data.measured.strikes[s].name}, {"gap_before", r.location.strike_gap_db[s]},
                        {"gap_after", r.after[s].gap_db}, {"gain_db", r.strike_gain_db[s]},
+                       {"gap_before_held_out", s < r.strike_cv_gap_before_db.size() ? nlohmann::json(r.strike_cv_gap_before_db[s]) : nlohmann::json()},
                        {"gap_after_held_out", s < r.strike_cv_gap_after_db.size() ? nlohmann::json(r.strike_cv_gap_after_db[s]) : nlohmann::json()},
                        {"floor", r.strike_floor_db[s]}});
   // The three worst Bark bands and the worst frame of the baseline.
@@ -78,6 +79,9 @@ nlohmann::json result_json(const AuditResult& r, const audit::AuditData& data) {
           {"cv_gap_after", r.cv_gap_after_db},
           {"floor_db", r.floor_db},
           {"share_above_floor", r.share_above_floor},
+          {"left_shared", {{"mean_db", r.left_shared.mean_db},
+                           {"standard_error_db", r.left_shared.standard_error_db},
+                           {"resolved", r.left_shared.resolved()}}},
           {"strikes", r.strikes},
           {"modes", r.modes},
           {"named_effects", named},
@@ -235,7 +239,19 @@ void register_audit(CLI::App& app) {
       std::printf("repeatability floor: %.2f dB (held-out strikes against the best model of the others; "
                   "%.2f dB of the held-out gap lies above it)\n",
                   r.floor_db, std::max(0.0, r.cv_gap_before_db - r.floor_db));
-      if (r.named.empty()) std::printf("nothing named: no effect in the catalog lowers the held-out gap enough\n");
+      if (r.named.empty() && r.left_shared.resolved())
+        std::printf("nothing named, yet the strikes share something the model lacks: the other strikes' mean "
+                    "residual predicts a held-out strike %.2f +- %.2f dB better than the model, and no effect in the "
+                    "catalog lowers the held-out gap enough (an effect the catalog does not hold, or one too weak for "
+                    "its detector)\n",
+                    r.left_shared.mean_db, r.left_shared.standard_error_db);
+      else if (r.named.empty())
+        std::printf("nothing named, and nothing the strikes share is missing: the other strikes' mean residual "
+                    "predicts a held-out strike %.2f +- %.2f dB better than the model, under what the audit resolves "
+                    "(%.2f dB and two standard errors); what is left is how the strikes differ (repetition, or an "
+                    "effect that varies from strike to strike, such as hand damping, a contact or a moving hit "
+                    "point, too weak for its detector)\n",
+                    r.left_shared.mean_db, r.left_shared.standard_error_db, audit::kSharedResolutionDb);
       for (const auto& n : r.named) {
         std::printf("+ %-17s gap %.2f -> %.2f dB, closes %.0f %% of the gap above the floor: %s\n", n.effect.c_str(),
                     n.gap_before_db, n.gap_after_db, 100.0 * n.share_above_floor, n.evidence.c_str());
@@ -243,6 +259,12 @@ void register_audit(CLI::App& app) {
       }
       std::printf("final: %.2f dB (held-out %.2f dB; %.0f %% of the gap above the floor closed)\n", r.gap_after_db,
                   r.cv_gap_after_db, 100.0 * r.share_above_floor);
+      if (!r.named.empty())
+        std::printf("left: what the other strikes share beyond the final model predicts a held-out strike %.2f +- %.2f "
+                    "dB better (%s)\n",
+                    r.left_shared.mean_db, r.left_shared.standard_error_db,
+                    r.left_shared.resolved() ? "resolved: the strikes share something the named effects do not explain"
+                                             : "under what the audit resolves: nothing the strikes share is left");
       for (const auto& u : r.untested) std::printf("not tested: %s\n", u.c_str());
       if (!opt->report.empty()) std::printf("report: %s\n", opt->report.c_str());
     } catch (const audit::AuditError& e) {

@@ -77,6 +77,24 @@ TEST(AuditCli, GenerateThenAuditNamesTheHiddenEffectAndWritesAReport) {
   EXPECT_LT(j2["gap_before"].get<double>(), 1.5 * j["gap_after"].get<double>() + 0.3);
 }
 
+// Clean strikes with independent per-mode jitter: nothing named, and the audit says nothing the strikes
+// share is missing rather than that its catalog fell short.
+TEST(AuditCli, CleanJitteredStrikesShareNothingTheModelLacks) {
+  TempDir d;
+  const RunResult g = run_cli("audit-generate --seed 32 --jitter-db 2 -o " + d.file("case"), d);
+  ASSERT_EQ(g.exit_code, 0) << g.err;
+  const RunResult r = run_cli("audit --measured" + strikes(d, "case", 5), d);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("nothing named, and nothing the strikes share is missing"), std::string::npos) << r.out;
+  const RunResult j = run_cli("audit --measured" + strikes(d, "case", 5) + " --json", d);
+  ASSERT_EQ(j.exit_code, 0) << j.err;
+  const auto json = nlohmann::json::parse(j.out);
+  EXPECT_TRUE(json["named_effects"].empty());
+  EXPECT_FALSE(json["left_shared"]["resolved"].get<bool>());
+  EXPECT_LT(json["left_shared"]["mean_db"].get<double>(), 0.05);
+  for (const auto& st : json["locate"]["strikes"]) EXPECT_GT(st["gap_before_held_out"].get<double>(), 0.0);
+}
+
 TEST(AuditCli, BadInputGetsOneLineAndExitTwo) {
   TempDir d;
   ASSERT_EQ(run_cli("audit-generate --seed 8 -o " + d.file("a"), d).exit_code, 0);

@@ -78,6 +78,11 @@ struct Tally {
   int clean = 0, clean_quiet = 0;
   int with_effect = 0, shrunk = 0;
   int halved_above_floor = 0;  // the held-out gap above the repeatability floor at least halves
+  // The same without the cases at the floor: nothing named, and the strikes share nothing resolved beyond
+  // the model (repeatability_floor.hpp's SharedResidual). For an effect that varies from strike to strike
+  // (hit points, hand damping, contacts) that does not make it invisible, only not shared.
+  std::map<std::string, int> hidden_resolved, hit_resolved;
+  int with_effect_resolved = 0, halved_resolved = 0;
   std::vector<double> shrink, floor_db;
   // The confusion matrix's rows (hidden) and columns (named), "none" last in each; empty: the first
   // generator's effects for both.
@@ -95,13 +100,20 @@ struct Tally {
       clean_quiet += named.empty();
       return;
     }
+    const bool resolved = !r.named.empty() || r.left_shared.resolved();
     for (const auto& h : plan.effects) {
       ++hidden[h];
-      for (const auto& n : named) hit[h] += n == h;
+      hidden_resolved[h] += resolved;
+      for (const auto& n : named) {
+        hit[h] += n == h;
+        hit_resolved[h] += resolved && n == h;
+      }
     }
     ++with_effect;
+    with_effect_resolved += resolved;
     floor_db.push_back(r.floor_db);
     halved_above_floor += r.share_above_floor >= 0.5;
+    halved_resolved += resolved && r.share_above_floor >= 0.5;
     const double s = r.gap_before_db > 0 ? 1.0 - r.gap_after_db / r.gap_before_db : 0.0;
     shrink.push_back(s);
     shrunk += s >= 0.5;
@@ -125,9 +137,10 @@ struct Tally {
       }
       std::printf("\n");
     }
+    const auto count = [](const std::map<std::string, int>& m, const std::string& e) { return m.count(e) ? m.at(e) : 0; };
     for (const auto& [e, n] : hidden)
-      std::printf("%-17s named in %d of %d cases where hidden (%.0f %%)\n", e.c_str(), hit.count(e) ? hit.at(e) : 0, n,
-                  100.0 * (hit.count(e) ? hit.at(e) : 0) / n);
+      std::printf("%-17s named in %d of %d cases where hidden (%.0f %%); in %d of %d not at the floor\n",
+                  e.c_str(), count(hit, e), n, 100.0 * count(hit, e) / n, count(hit_resolved, e), count(hidden_resolved, e));
     std::printf("clean: nothing named in %d of %d (%.0f %%)\n", clean_quiet, clean, clean ? 100.0 * clean_quiet / clean : 0.0);
     std::printf("gap shrinks by >= 50 %% in %d of %d cases with an effect (%.0f %%)\n", shrunk, with_effect,
                 with_effect ? 100.0 * shrunk / with_effect : 0.0);
@@ -137,6 +150,9 @@ struct Tally {
                 "floor median %.3f dB, max %.3f dB\n",
                 halved_above_floor, with_effect, with_effect ? 100.0 * halved_above_floor / with_effect : 0.0,
                 f.empty() ? 0.0 : f[f.size() / 2], f.empty() ? 0.0 : f.back());
+    std::printf("... in %d of %d cases not at the floor (at it: nothing named, and nothing shared beyond the model "
+                "resolved)\n",
+                halved_resolved, with_effect_resolved);
   }
 };
 

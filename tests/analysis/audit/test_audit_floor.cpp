@@ -29,6 +29,29 @@ TEST(AuditFloor, ShareIsTheImprovementOverTheGapAboveTheFloor) {
   EXPECT_DOUBLE_EQ(share_above_floor(1.0, 1.0, 1.0), 0.0);  // nothing above the floor
 }
 
+TEST(AuditFloor, SharedResidualIsResolvedBeyondTwoStandardErrors) {
+  // The best model of the others beats the fold model by 1, 2, 3 dB: mean 2, standard error 1 / sqrt(3).
+  RepeatabilityFloor clear;
+  clear.strike_gap_db = {2.0, 3.0, 4.0};
+  clear.strike_best_db = {1.0, 1.0, 1.0};
+  const SharedResidual shared = shared_residual(clear);
+  EXPECT_DOUBLE_EQ(shared.mean_db, 2.0);
+  EXPECT_NEAR(shared.standard_error_db, 1.0 / std::sqrt(3.0), 1e-12);
+  EXPECT_TRUE(shared.resolved());
+  // Differences that scatter around zero: the others' residual is their scatter.
+  RepeatabilityFloor within;
+  within.strike_gap_db = {1.1, 0.9, 1.05, 0.98};
+  within.strike_best_db = {1.0, 1.0, 1.0, 1.0};
+  EXPECT_NEAR(shared_residual(within).mean_db, 0.0075, 1e-12);
+  EXPECT_FALSE(shared_residual(within).resolved());
+  EXPECT_FALSE(shared_residual(RepeatabilityFloor{}).resolved());
+  // Consistent but under the resolution: the plain model's own imperfection on clean strikes.
+  RepeatabilityFloor tiny;
+  tiny.strike_gap_db = {1.02, 1.03, 1.02};
+  tiny.strike_best_db = {1.0, 1.0, 1.0};
+  EXPECT_FALSE(shared_residual(tiny).resolved());
+}
+
 TEST(AuditFloor, GainOnlyCopiesOfOneRecordingHaveNoFloor) {
   // The kits' "velocity layers": one strike scaled by -9, -6, -3, -1 and 0 dB; the strike has a room
   // tail the plain model lacks, so the model has a gap the floor does not share.
@@ -47,6 +70,10 @@ TEST(AuditFloor, GainOnlyCopiesOfOneRecordingHaveNoFloor) {
   ASSERT_EQ(r.strike_floor_db.size(), 5u);
   EXPECT_GT(r.cv_gap_before_db, r.floor_db + 0.5);  // the model's own gap lies above it
   EXPECT_NEAR(r.share_above_floor, (r.cv_gap_before_db - r.cv_gap_after_db) / (r.cv_gap_before_db - r.floor_db), 1e-12);
+  ASSERT_EQ(r.strike_cv_gap_before_db.size(), 5u);
+  double sum = 0.0;
+  for (double g : r.strike_cv_gap_before_db) sum += g;
+  EXPECT_NEAR(sum / 5.0, r.cv_gap_before_db, 1e-9);
 }
 
 TEST(AuditFloor, GrowsWithTheStrikeToStrikeAmplitudeJitter) {
@@ -56,9 +83,13 @@ TEST(AuditFloor, GrowsWithTheStrikeToStrikeAmplitudeJitter) {
       const AuditResult r = audit_of(jittered_case(seed, {}, {}, jitter_db).recordings);
       std::string named;
       for (const auto& n : r.named) named += " " + n.effect;
-      std::printf("seed %llu jitter %.0f dB: floor %.3f dB, held-out gap %.3f -> %.3f dB, named:%s\n",
+      std::printf("seed %llu jitter %.0f dB: floor %.3f dB, held-out gap %.3f -> %.3f dB (shared beyond the model "
+                  "%.3f +- %.3f), named:%s\n",
                   (unsigned long long)seed, jitter_db, r.floor_db, r.cv_gap_before_db, r.cv_gap_after_db,
-                  named.empty() ? " none" : named.c_str());
+                  r.left_shared.mean_db, r.left_shared.standard_error_db, named.empty() ? " none" : named.c_str());
+      // Nothing hidden: the strikes share nothing resolved beyond the plain model (jitter is independent per
+      // strike; the model's own imperfection stays under the resolution).
+      if (jitter_db > 0.0) EXPECT_FALSE(r.left_shared.resolved()) << seed << " " << jitter_db;
       EXPECT_GT(r.floor_db, previous + (jitter_db > 0.0 ? 0.2 : -1.0)) << seed << " " << jitter_db;
       if (jitter_db == 0.0) EXPECT_LT(r.floor_db, 0.1) << seed;
       previous = r.floor_db;

@@ -50,9 +50,10 @@ void print_case(const CasePlan& plan, const indep::IndependentCase& c, const aud
   // Every digit of a strength: INDEPENDENT_DUMP can then make the same case again.
   for (std::size_t i = 0; i < plan.effects.size(); ++i)
     std::printf(" %s(%.17g)", plan.effects[i].c_str(), plan.strengths[i]);
-  std::printf(" | gap %.2f -> %.2f (held-out %.2f -> %.2f) | floor %.2f, share above it %.2f | %.1f s | named:",
+  std::printf(" | gap %.2f -> %.2f (held-out %.2f -> %.2f) | floor %.2f, share above it %.2f, left shared %.2f +- %.2f"
+              " | %.1f s | named:",
               r.gap_before_db, r.gap_after_db, r.cv_gap_before_db, r.cv_gap_after_db, r.floor_db, r.share_above_floor,
-              seconds);
+              r.left_shared.mean_db, r.left_shared.standard_error_db, seconds);
   for (const auto& n : r.named) std::printf(" %s", n.effect.c_str());
   std::printf(" | first round:");
   if (!r.rounds.empty())
@@ -219,7 +220,7 @@ TEST(AuditIndependent, DISABLED_Tuning) {
   EXPECT_GT(tally.clean, 0);
 }
 
-// Held-out seeds 44440-44659 (never used for tuning: not 1000-1179, 5000-15239, 40000-42999, 44660-45319; 41000-41219,
+// Held-out seeds 44440-44659 (never used for tuning: not 1000-1179, 5000-15479, 40000-42999, 44660-45539; 41000-41219,
 // 43000-43219, 44000-44219 and 44220-44439 held out earlier audits), strengths drawn from (0, 1), in two
 // halves (each 110 cases, 10 of each effect alone, 20 clean, 10 pairs; ~4 min each on two cores): the
 // audit must meet the bars on each half. Disabled because it does not yet: the one run on these seeds
@@ -230,6 +231,8 @@ TEST(AuditIndependent, DISABLED_Tuning) {
 // 20/24, bursts 17/21, contacts 24/28 and the halving 160/180. After the contact fit settles each strike's
 // gain with its contact: 44880-45099 (one run, held-out gains only) rooms 18/23, bursts 23/27; 45100-45319
 // (one run) every bar over the 220 but hit points 25/28, and per half hit points 13/15, bursts 11/13;
+// 45320-45539 (one run, same detectors) every bar over the 220 and on the first half, bursts 11/13 on
+// the second.
 // INDEPENDENT_VERBOSE prints every case; INDEPENDENT_HELDOUT_FIRST runs the same protocol from another
 // first seed (the second half 110 after it). Enable when a change meets the bars on fresh seeds, not on these.
 std::size_t held_out_first() { return env_or("INDEPENDENT_HELDOUT_FIRST", 44440); }
