@@ -1,7 +1,9 @@
 // mode_doublet: a degenerate mode split by imperfection into two close modes that beat (a periodic
 // envelope modulation at the split frequency). Detector: tracks where the extraction resolved two
 // modes closer than the merge tolerance in at least half of the strikes. Extension: those modes
-// become pairs f -+ split/2 with the measured split and amplitude balance.
+// become pairs f -+ split/2 with the measured centre, split and amplitude balance. The centre is the
+// members' midpoint, not the track's energy-weighted frequency: an unbalanced pair centred there sits
+// off by up to half its split, and its beats with the neighbouring modes drift out of step.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -15,7 +17,7 @@ namespace {
 constexpr double kMinShare = 0.5;  // share of the strikes in which the pair must be resolved
 
 struct Pair {
-  double split_hz, balance;
+  double centre_hz, split_hz, balance;
 };
 
 // The two strongest members of a track observation as a pair (nothing when fewer than two).
@@ -26,6 +28,7 @@ bool pair_of(const TrackObservation& o, Pair& p) {
   const Mode& lo = m[0].freq_hz < m[1].freq_hz ? m[0] : m[1];
   const Mode& hi = m[0].freq_hz < m[1].freq_hz ? m[1] : m[0];
   if (hi.amp < 0.03 * lo.amp || lo.amp < 0.03 * hi.amp) return false;  // a 30 dB partner is a fit artefact
+  p.centre_hz = 0.5 * (lo.freq_hz + hi.freq_hz);
   p.split_hz = hi.freq_hz - lo.freq_hz;
   p.balance = hi.amp / (hi.amp + lo.amp);
   return p.split_hz > 0.05;
@@ -35,7 +38,7 @@ bool pair_of(const TrackObservation& o, Pair& p) {
 std::vector<std::pair<std::size_t, Pair>> split_tracks(const AuditData& data, const std::vector<std::size_t>& strikes) {
   std::vector<std::pair<std::size_t, Pair>> out;
   for (std::size_t n = 0; n < data.tracks.size(); ++n) {
-    std::vector<double> split, balance;
+    std::vector<double> centre, split, balance;
     std::size_t present = 0;
     for (std::size_t s : strikes) {
       const TrackObservation& o = data.tracks[n].strikes[s];
@@ -43,12 +46,13 @@ std::vector<std::pair<std::size_t, Pair>> split_tracks(const AuditData& data, co
       ++present;
       Pair p{};
       if (pair_of(o, p)) {
+        centre.push_back(p.centre_hz);
         split.push_back(p.split_hz);
         balance.push_back(p.balance);
       }
     }
     if (present > 0 && !split.empty() && double(split.size()) >= kMinShare * double(present))
-      out.push_back({n, {median(split), median(balance)}});
+      out.push_back({n, {median(centre), median(split), median(balance)}});
   }
   return out;
 }
@@ -75,6 +79,7 @@ void extend(const AuditData& data, AuditModel& model, const std::vector<std::siz
   for (const auto& [track, pair] : split_tracks(data, train))
     for (AuditMode& m : model.modes)
       if (m.track == int(track)) {
+        m.freq_hz = pair.centre_hz;
         m.doublet.split_hz = pair.split_hz;
         m.doublet.balance = pair.balance;
       }
