@@ -158,7 +158,7 @@ TEST(AuditIndependent, DISABLED_Dump) {
 }
 
 // An unbalanced doublet (one member up to 4.8 dB under the other) is placed on its members, not on the
-// track's energy-weighted frequency: there it sat off by up to a quarter of its split, and its beats
+// track's energy-weighted frequency: there it sat off by up to half its split, and its beats
 // with the neighbouring modes in the same Bark band drifted out of step (tuning doublets 40600-40639:
 // the gap above the floor halved in 33/40 before, 40/40 after).
 TEST(AuditIndependent, AnUnbalancedDoubletSitsOnItsMembers) {
