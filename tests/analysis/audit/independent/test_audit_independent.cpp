@@ -103,7 +103,8 @@ void expect_bars(Tally& tally) {
 // INDEPENDENT_DUMP=DIR INDEPENDENT_SEED=S [INDEPENDENT_EFFECTS=a,b INDEPENDENT_STRENGTHS=u,v]. With
 // INDEPENDENT_DUMP_AUDIT it also audits the strikes as generated (in double precision; the files are
 // float32, and a held-out case's strengths must be given to all their digits to be the same case) and
-// prints every passing candidate; with INDEPENDENT_DUMP_TRACKS, the extracted tracks (dB / decay per strike).
+// prints every passing candidate (INDEPENDENT_DUMP_ALL: every candidate); with INDEPENDENT_DUMP_TRACKS, the
+// extracted tracks (dB / decay per strike).
 TEST(AuditIndependent, DISABLED_Dump) {
   const char* dir = std::getenv("INDEPENDENT_DUMP");
   ASSERT_NE(dir, nullptr) << "set INDEPENDENT_DUMP=DIR";
@@ -149,9 +150,9 @@ TEST(AuditIndependent, DISABLED_Dump) {
   std::printf("  gap %.4f -> %.4f dB\n", r.gap_before_db, r.gap_after_db);
   for (std::size_t round = 0; round < r.rounds.size(); ++round)
     for (const audit::Candidate& k : r.rounds[round])
-      if (k.detector_passes)
-        std::printf("  round %zu %-18s improvement %.2f dB: %.160s\n", round, k.effect.c_str(), k.improvement_db,
-                    k.note.c_str());
+      if (k.detector_passes || std::getenv("INDEPENDENT_DUMP_ALL"))
+        std::printf("  round %zu %-18s %s improvement %.2f dB: %.400s\n", round, k.effect.c_str(),
+                    k.detector_passes ? "passes" : "quiet ", k.improvement_db, k.note.c_str());
   std::printf("  named:");
   for (const auto& n : r.named) std::printf(" %s", n.effect.c_str());
   std::printf("\n");
