@@ -148,9 +148,10 @@ TEST(AuditIndependent, DISABLED_Dump) {
     }
   const audit::AuditResult r = audit::run_audit(data);
   std::printf("  gap %.4f -> %.4f dB\n", r.gap_before_db, r.gap_after_db);
+  const bool every_candidate = std::getenv("INDEPENDENT_DUMP_ALL") != nullptr;
   for (std::size_t round = 0; round < r.rounds.size(); ++round)
     for (const audit::Candidate& k : r.rounds[round])
-      if (k.detector_passes || std::getenv("INDEPENDENT_DUMP_ALL"))
+      if (k.detector_passes || every_candidate)
         std::printf("  round %zu %-18s %s improvement %.2f dB: %.400s\n", round, k.effect.c_str(),
                     k.detector_passes ? "passes" : "quiet ", k.improvement_db, k.note.c_str());
   std::printf("  named:");
