@@ -222,6 +222,28 @@ TEST(AuditIndependent, AWeakBurstIsNamedWhereTheAttackHoldsNoiseNoModeMakes) {
   }
 }
 
+// The generator's weakest bursts (-23.5 dB re the modes; tuning seeds 42000, 42016, 42020) lower the
+// attack's gap by 0.07-0.11 dB over all its cells, but by 5.2-5.7 dB in the few cells between the modes
+// they fill; contacts whose attack also holds noise no mode makes (42208, 42223, 42234: 2.7 dB at most
+// there) are not taken for bursts.
+TEST(AuditIndependent, AnAlmostInaudibleBurstIsNamedByTheCellsItFills) {
+  for (std::uint64_t seed : {42000u, 42016u, 42020u}) {
+    const double strength = 0.1 + 0.2 * double(seed % 5);
+    const indep::IndependentCase c = indep::generate_independent_case(seed, {"residual_transient"}, {strength});
+    const audit::AuditResult r = audit::run_audit(audit::make_audit_data(c.recordings));
+    ASSERT_FALSE(r.named.empty()) << seed;
+    EXPECT_EQ(r.named.front().effect, "residual_transient") << seed;
+  }
+  for (std::uint64_t seed : {42208u, 42223u, 42234u}) {
+    const double strength = 0.1 + 0.2 * double(seed % 5);
+    const indep::IndependentCase c = indep::generate_independent_case(seed, {"contact_duration"}, {strength});
+    const audit::AuditResult r = audit::run_audit(audit::make_audit_data(c.recordings));
+    ASSERT_FALSE(r.named.empty()) << seed;
+    EXPECT_EQ(r.named.front().effect, "contact_duration") << seed;
+    for (const auto& n : r.named) EXPECT_NE(n.effect, "residual_transient") << seed;
+  }
+}
+
 // A hand grips harder in some strikes than in others, so a strike's modes share its excess decay; a
 // room's answer makes the extracted decays wander mode by mode. On tuning seeds the two-way analysis
 // tells them apart, and where support_damping would outscore a strong room by absorbing its scattered
@@ -250,7 +272,7 @@ TEST(AuditIndependent, DISABLED_Tuning) {
   EXPECT_GT(tally.clean, 0);
 }
 
-// Held-out seeds 44440-44659 (never used for tuning: not 1000-1179, 5000-15719, 40000-42999, 44660-45759; 41000-41219,
+// Held-out seeds 44440-44659 (never used for tuning: not 1000-1179, 5000-15719, 40000-42999, 44660-45979; 41000-41219,
 // 43000-43219, 44000-44219 and 44220-44439 held out earlier audits), strengths drawn from (0, 1), in two
 // halves (each 110 cases, 10 of each effect alone, 20 clean, 10 pairs; ~4 min each on two cores): the
 // audit must meet the bars on each half. Disabled because it does not yet: the one run on these seeds
@@ -262,7 +284,9 @@ TEST(AuditIndependent, DISABLED_Tuning) {
 // gain with its contact: 44880-45099 (one run, held-out gains only) rooms 18/23, bursts 23/27; 45100-45319
 // (one run) every bar over the 220 but hit points 25/28, and per half hit points 13/15, bursts 11/13;
 // 45320-45539 (one run, same detectors) every bar over the 220 and on the first half, bursts 11/13 on
-// the second; 45540-45759 (after the doublet fix) the halving 173/180, but rooms 20/23, bursts 18/23.
+// the second; 45540-45759 (after the doublet fix) the halving 173/180, but rooms 20/23, bursts 18/23;
+// 45760-45979 (with the bursts' filled cells) bursts 21/21, the halving 171/180, but rooms 25/29 and
+// damping_law 25/30 (each law missed beside a room or a hand).
 // INDEPENDENT_VERBOSE prints every case; INDEPENDENT_HELDOUT_FIRST runs the same protocol from another
 // first seed (the second half 110 after it). Enable when a change meets the bars on fresh seeds, not on these.
 std::size_t held_out_first() { return env_or("INDEPENDENT_HELDOUT_FIRST", 44440); }
