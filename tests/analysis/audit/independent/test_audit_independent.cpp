@@ -227,17 +227,17 @@ TEST(AuditIndependent, AWeakBurstIsNamedWhereTheAttackHoldsNoiseNoModeMakes) {
 // they fill; contacts whose attack also holds noise no mode makes (42208, 42223, 42234: 2.7 dB at most
 // there) are not taken for bursts.
 TEST(AuditIndependent, AnAlmostInaudibleBurstIsNamedByTheCellsItFills) {
-  for (std::uint64_t seed : {42000u, 42016u, 42020u}) {
+  const auto audit_tuning_case = [](std::uint64_t seed, const std::string& effect) {  // at its tuning strength
     const double strength = 0.1 + 0.2 * double(seed % 5);
-    const indep::IndependentCase c = indep::generate_independent_case(seed, {"residual_transient"}, {strength});
-    const audit::AuditResult r = audit::run_audit(audit::make_audit_data(c.recordings));
+    return audit::run_audit(audit::make_audit_data(indep::generate_independent_case(seed, {effect}, {strength}).recordings));
+  };
+  for (std::uint64_t seed : {42000u, 42016u, 42020u}) {
+    const audit::AuditResult r = audit_tuning_case(seed, "residual_transient");
     ASSERT_FALSE(r.named.empty()) << seed;
     EXPECT_EQ(r.named.front().effect, "residual_transient") << seed;
   }
   for (std::uint64_t seed : {42208u, 42223u, 42234u}) {
-    const double strength = 0.1 + 0.2 * double(seed % 5);
-    const indep::IndependentCase c = indep::generate_independent_case(seed, {"contact_duration"}, {strength});
-    const audit::AuditResult r = audit::run_audit(audit::make_audit_data(c.recordings));
+    const audit::AuditResult r = audit_tuning_case(seed, "contact_duration");
     ASSERT_FALSE(r.named.empty()) << seed;
     EXPECT_EQ(r.named.front().effect, "contact_duration") << seed;
     for (const auto& n : r.named) EXPECT_NE(n.effect, "residual_transient") << seed;
