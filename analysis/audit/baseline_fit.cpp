@@ -75,18 +75,38 @@ double rms_log_residual(const std::vector<DampingPoint>& points, const std::vect
   return points.empty() ? 0.0 : std::sqrt(s / double(points.size()));
 }
 
-std::vector<DampingPoint> track_points(const AuditData& data, const std::vector<std::size_t>& strikes) {
+DampingLaw trimmed_law(std::vector<DampingPoint> points, DampingKind kind) {
+  DampingLaw law = fit_law_relative(points, kind);
+  for (int round = 0; round < 2; ++round) {
+    std::vector<DampingPoint> near;
+    for (const DampingPoint& p : points) {
+      const double c = law.decay_per_s(p.lambda_rad2_s2) * 2.0;  // c = 2d
+      if (p.c_per_s < 2.5 * c && c < 2.5 * p.c_per_s) near.push_back(p);
+    }
+    if (near.size() < 3 || near.size() == points.size()) break;
+    points = std::move(near);
+    law = fit_law_relative(points, kind);
+  }
+  return law;
+}
+
+std::vector<DampingPoint> track_points(const AuditData& data, const std::vector<std::size_t>& strikes,
+                                       const std::vector<bool>* only) {
   std::vector<DampingPoint> pts;
-  for (const ModeTrack& t : data.tracks)
+  for (std::size_t n = 0; n < data.tracks.size(); ++n) {
+    if (only && !(*only)[n]) continue;
+    const ModeTrack& t = data.tracks[n];
     for (std::size_t s : strikes)
       if (t.strikes[s].present) pts.push_back(damping_point(t.strikes[s].freq_hz, t.strikes[s].decay_per_s));
+  }
   return pts;
 }
 
 std::vector<DampingPoint> track_median_points(const AuditData& data, const std::vector<std::size_t>& strikes,
-                                              std::vector<std::size_t>* track_index) {
+                                              std::vector<std::size_t>* track_index, const std::vector<bool>* only) {
   std::vector<DampingPoint> pts;
   for (std::size_t n = 0; n < data.tracks.size(); ++n) {
+    if (only && !(*only)[n]) continue;
     std::vector<double> d;
     for (std::size_t s : strikes)
       if (data.tracks[n].strikes[s].present) d.push_back(data.tracks[n].strikes[s].decay_per_s);
@@ -97,6 +117,13 @@ std::vector<DampingPoint> track_median_points(const AuditData& data, const std::
     if (track_index) track_index->push_back(n);
   }
   return pts;
+}
+
+std::vector<bool> modelled_tracks(const AuditData& data, const AuditModel& model) {
+  std::vector<bool> on(data.tracks.size(), false);
+  for (const AuditMode& m : model.modes)
+    if (m.track >= 0 && std::size_t(m.track) < on.size()) on[std::size_t(m.track)] = true;
+  return on;
 }
 
 void apply_law(AuditModel& model) {

@@ -18,14 +18,23 @@ namespace ms::audit {
 // 0.30..1.80 step 0.01, best kept. alpha1, alpha2 >= 0.
 DampingLaw fit_law_relative(const std::vector<DampingPoint>& points, DampingKind kind);
 
+// The same, refitted without the points more than 2.5 times off the law (twice): in a room, tracks near a
+// mode's frequency decay at the room's rate.
+DampingLaw trimmed_law(std::vector<DampingPoint> points, DampingKind kind);
+
 // RMS of log(c_model / c_i) over the points.
 double rms_log_residual(const std::vector<DampingPoint>& points, const std::vector<double>& model_c);
 
-// (lambda, c) of every present track observation of the given strikes.
-std::vector<DampingPoint> track_points(const AuditData& data, const std::vector<std::size_t>& strikes);
+// (lambda, c) of every present track observation of the given strikes (of the tracks `only` marks,
+// where given).
+std::vector<DampingPoint> track_points(const AuditData& data, const std::vector<std::size_t>& strikes,
+                                       const std::vector<bool>* only = nullptr);
 // One point per track: the median decay over the given strikes.
 std::vector<DampingPoint> track_median_points(const AuditData& data, const std::vector<std::size_t>& strikes,
-                                              std::vector<std::size_t>* track_index = nullptr);
+                                              std::vector<std::size_t>* track_index = nullptr,
+                                              const std::vector<bool>* only = nullptr);
+// The tracks the model's modes sit on (a model may have dropped some: a room's answers, a burst's noise).
+std::vector<bool> modelled_tracks(const AuditData& data, const AuditModel& model);
 
 // Amplitude shapes A_n given the strikes' gains (and contacts), then gains again: alternating
 // least squares on log amplitudes, three rounds.

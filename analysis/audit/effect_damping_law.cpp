@@ -4,7 +4,9 @@
 // are weighted by that median's own uncertainty (strike-to-strike scatter of the track's decays), so
 // a deviation counts only where it exceeds what repeated strikes of the same mode disagree by. This
 // separates a weak hybrid law (decays precise, systematically off) from support damping (decays
-// scattered per strike). Extension: the hybrid law's decays.
+// scattered per strike). Both look only at the tracks the model's modes sit on: those a room's answer
+// or a burst's noise made, which the model has dropped, do not decay on the object's law. Extension:
+// the hybrid law's decays.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -75,7 +77,8 @@ std::vector<double> law_c(const DampingLaw& law, const std::vector<DampingPoint>
 Detection detect(const AuditData& data, const AuditModel& current) {
   Detection d;
   std::vector<std::size_t> tracks;
-  const auto pts = track_median_points(data, all_strikes(data), &tracks);
+  const std::vector<bool> modelled = modelled_tracks(data, current);
+  const auto pts = track_median_points(data, all_strikes(data), &tracks, &modelled);
   if (pts.size() < kMinTracks) {
     d.evidence = "too few modes to compare damping laws";
     return d;
@@ -97,12 +100,13 @@ Detection detect(const AuditData& data, const AuditModel& current) {
 }
 
 void extend(const AuditData& data, AuditModel& model, const std::vector<std::size_t>& train) {
-  const auto points = track_points(data, train);
+  const std::vector<bool> modelled = modelled_tracks(data, model);
+  const auto points = track_points(data, train, &modelled);
   if (!model.extra_decay_per_s.empty() && points.size() >= 8) {
     // With support damping the law is the lower edge of the scatter: refit it as a hybrid EMG.
     model.law = fit_damping(points, DampingKind::hybrid, DampingEstimator::emg).law;
   } else {
-    model.law = fit_law_relative(track_median_points(data, train), DampingKind::hybrid);
+    model.law = trimmed_law(track_median_points(data, train, nullptr, &modelled), DampingKind::hybrid);
   }
   model.law_fitted = true;
   apply_law(model);

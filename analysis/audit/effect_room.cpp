@@ -72,23 +72,6 @@ TrackLevel track_level(const AuditData& data, const AuditModel& model, std::size
   return decay.empty() ? TrackLevel{} : TrackLevel{median(decay), median(energy)};
 }
 
-// Rayleigh law of the points by relative least squares, refitted without the points more than 2.5
-// times off it (twice): in a room, tracks near a mode's frequency decay at the room's rate.
-DampingLaw trimmed_law(std::vector<DampingPoint> points) {
-  DampingLaw law = fit_law_relative(points, DampingKind::rayleigh);
-  for (int round = 0; round < 2; ++round) {
-    std::vector<DampingPoint> near;
-    for (const DampingPoint& p : points) {
-      const double c = law.decay_per_s(p.lambda_rad2_s2) * 2.0;  // c = 2d
-      if (p.c_per_s < 2.5 * c && c < 2.5 * p.c_per_s) near.push_back(p);
-    }
-    if (near.size() < 3 || near.size() == points.size()) break;
-    points = std::move(near);
-    law = fit_law_relative(points, DampingKind::rayleigh);
-  }
-  return law;
-}
-
 // What the model's modes look like beside each other: for each, by how much (dB) the strongest track
 // within one Bark exceeds it, and whether it is the room's (see the header).
 struct RoomMadeTracks {
@@ -113,7 +96,7 @@ RoomMadeTracks room_made(const AuditData& data, const AuditModel& model, const s
     if (model.modes[n].track >= 0 && level[n].decay_per_s > 0.0 && stronger[n] < 0.0)
       points.push_back(damping_point(model.modes[n].freq_hz, level[n].decay_per_s));
   const bool have_law = points.size() >= 3;
-  const DampingLaw law = have_law ? trimmed_law(points) : DampingLaw{};
+  const DampingLaw law = have_law ? trimmed_law(points, DampingKind::rayleigh) : DampingLaw{};
   const auto law_decay = [&](std::size_t n) {
     const double omega = 2.0 * std::numbers::pi * model.modes[n].freq_hz;
     return std::max(1e-3, law.decay_per_s(omega * omega));
@@ -148,7 +131,7 @@ std::size_t drop_modes(const AuditData& data, AuditModel& model, const std::vect
     for (std::size_t i = 0; i < index.size(); ++i)
       for (const AuditMode& m : model.modes)
         if (m.track == int(index[i])) kept.push_back(all[i]);
-    model.law = trimmed_law(kept);
+    model.law = trimmed_law(kept, DampingKind::rayleigh);
     apply_law(model);
   }
   fit_amplitudes(model, data, train);

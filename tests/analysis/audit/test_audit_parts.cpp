@@ -132,6 +132,28 @@ TEST(AuditLawFit, RecoversRayleighAndHybridExactly) {
   EXPECT_LT(rms_log_residual(h, c), 1e-9);
 }
 
+// A room's answers (as many as the modes) decay at the room's rate, far off the object's law: a hybrid law among them is
+// recovered once the points more than 2.5 times off it are left out.
+TEST(AuditLawFit, TrimmingRecoversAHybridLawAmongTracksAtTheRoomsRate) {
+  std::vector<DampingPoint> points;
+  for (double f : {200.0, 500.0, 900.0, 1500.0, 2500.0, 4000.0, 6500.0, 8000.0}) {
+    const double lambda = std::pow(2 * std::numbers::pi * f, 2);
+    points.push_back({lambda, 2.0 + 4e-6 * std::pow(lambda, 0.7)});
+  }
+  const std::vector<DampingPoint> object = points;
+  for (double f : {250.0, 400.0, 700.0, 1100.0, 1800.0, 2800.0, 4500.0, 7000.0})
+    points.push_back({std::pow(2 * std::numbers::pi * f, 2), 60.0});
+  const auto off_object = [&](const DampingLaw& law) {  // RMS log error on the object's own modes
+    std::vector<double> c;
+    for (const auto& p : object) c.push_back(2.0 * law.decay_per_s(p.lambda_rad2_s2));
+    return rms_log_residual(object, c);
+  };
+  EXPECT_GT(off_object(fit_law_relative(points, DampingKind::hybrid)), 0.05);  // 7.6 % RMS
+  const DampingLaw trimmed = trimmed_law(points, DampingKind::hybrid);
+  EXPECT_LT(off_object(trimmed), 1e-6);
+  EXPECT_NEAR(trimmed.alpha3, 0.7, 1e-6);
+}
+
 TEST(AuditBaseline, CleanStrikesAreExplainedAndTheModelRendersFromYaml) {
   const HiddenCase hc = generate_hidden_case(77, {}, {});
   const AuditData data = make_audit_data(hc.recordings);
