@@ -141,44 +141,38 @@ double median_attack_noise_s(const AuditData& data) {
   return median(spans);
 }
 
-// Per strike, the mean |model - measured| (dB) over its attack spectrogram's cells.
-std::vector<double> attack_gaps_db(const AuditData& data, const AuditModel& model) {
-  std::vector<double> gaps;
-  for (std::size_t s = 0; s < data.strike_count(); ++s) {
-    const GapSum g = gap_sum(data.measured.strikes[s].spectra[kAttack], predict_spectra(model, data, s)[kAttack]);
-    gaps.push_back(g.cells ? g.sum_db / double(g.cells) : 0.0);
-  }
-  return gaps;
-}
-
-// The cells a burst fills: per strike, the attack's cells where `with` (the burst added) predicts
-// kFilledCellRiseDb or more above `without`; the mean |gap| lowered there, and their number (medians over
-// the strikes).
-struct FilledCells {
-  double gain_db = 0.0;
-  double cells = 0.0;
+// The attacks without and with a burst, each model predicted once per strike: per strike the mean
+// |model - measured| (dB) over its attack spectrogram's cells; and the cells the burst fills, where `with`
+// predicts kFilledCellRiseDb or more above `without`: the mean |gap| lowered there and their number
+// (medians over the strikes).
+struct AttackComparison {
+  std::vector<double> before_db, after_db;
+  double filled_gain_db = 0.0;
+  double filled_cells = 0.0;
 };
-FilledCells filled_cells(const AuditData& data, const AuditModel& without, const AuditModel& with) {
-  std::vector<double> gains, counts;
+AttackComparison compare_attacks(const AuditData& data, const AuditModel& without, const AuditModel& with) {
+  AttackComparison out;
+  std::vector<double> gains, counts, before_diff, after_diff;
+  const auto mean = [](const GapSum& g) { return g.cells ? g.sum_db / double(g.cells) : 0.0; };
   for (std::size_t s = 0; s < data.strike_count(); ++s) {
     const BarkSpectrogram& measured = data.measured.strikes[s].spectra[kAttack];
-    const BarkSpectrogram before = predict_spectra(without, data, s)[kAttack], after = predict_spectra(with, data, s)[kAttack];
-    double peak = -400.0;
-    for (double p : measured.power) peak = std::max(peak, level_db(p));
-    const double floor = peak - kGapFloorDb;  // as the gap clamps
+    out.before_db.push_back(mean(gap_sum(measured, predict_spectra(without, data, s)[kAttack], kGapFloorDb, &before_diff)));
+    out.after_db.push_back(mean(gap_sum(measured, predict_spectra(with, data, s)[kAttack], kGapFloorDb, &after_diff)));
     double lowered = 0.0;
     std::size_t cells = 0;
-    for (std::size_t i = 0; i < measured.power.size(); ++i) {
-      const double m = std::max(level_db(measured.power[i]), floor), b = std::max(level_db(before.power[i]), floor),
-                   a = std::max(level_db(after.power[i]), floor);
+    for (std::size_t i = 0; i < before_diff.size(); ++i) {
+      // model - measured, both clamped to the floor; NaN where both lie on it (a difference of 0)
+      const double b = std::isnan(before_diff[i]) ? 0.0 : before_diff[i], a = std::isnan(after_diff[i]) ? 0.0 : after_diff[i];
       if (a < b + kFilledCellRiseDb) continue;
-      lowered += std::abs(b - m) - std::abs(a - m);
+      lowered += std::abs(b) - std::abs(a);
       ++cells;
     }
     gains.push_back(cells ? lowered / double(cells) : 0.0);
     counts.push_back(double(cells));
   }
-  return {median(gains), median(counts)};
+  out.filled_gain_db = median(gains);
+  out.filled_cells = median(counts);
+  return out;
 }
 
 Detection detect(const AuditData& data, const AuditModel& current) {
@@ -191,7 +185,9 @@ Detection detect(const AuditData& data, const AuditModel& current) {
   extend(data, with, all_strikes(data));
   // Every strike has its burst: the gain must show in (nearly) every strike, not in some strikes at the
   // others' cost (a contact the model lacks makes hard strikes too dull and soft ones too bright).
-  const std::vector<double> before = attack_gaps_db(data, current), after = attack_gaps_db(data, with);
+  const AttackComparison attacks = compare_attacks(data, current, with);
+  const std::vector<double>& before = attacks.before_db;
+  const std::vector<double>& after = attacks.after_db;
   double attack_before = 0.0, attack_after = 0.0;
   std::size_t better = 0;
   for (std::size_t s = 0; s < before.size(); ++s) {
@@ -203,13 +199,12 @@ Detection detect(const AuditData& data, const AuditModel& current) {
   const bool in_nearly_all = better >= 2 && double(better) >= kMinNoisyStrikesBetter * double(before.size());
   const double attack_gain_db = attack_before - attack_after;
   const bool noisy_attack = noise_s >= kMinAttackNoiseS;
-  const FilledCells filled = filled_cells(data, current, with);
   d.passes = d.statistic >= kMinAttackExcessDb || (noisy_attack && d.statistic >= kMinWeakExcessDb) ||
              (d.statistic >= kMaxAttackDeficitDb &&
               ((attack_gain_db >= kMinAttackGapImprovementDb && in_every_strike) ||
                (noisy_attack && attack_gain_db >= kMinNoisyAttackGapImprovementDb && in_nearly_all))) ||
-             (noisy_attack && d.statistic >= kMaxWeakAttackDeficitDb && filled.gain_db >= kMinFilledCellsGainDb &&
-              filled.cells >= kMinFilledCells);
+             (noisy_attack && d.statistic >= kMaxWeakAttackDeficitDb && attacks.filled_gain_db >= kMinFilledCellsGainDb &&
+              attacks.filled_cells >= kMinFilledCells);
   char buf[600];
   std::snprintf(buf, sizeof buf, "the attack holds noise no mode makes: the high-frequency power of the "
                 "first %.0f ms stands %.1f dB above the decay of 10-30 ms extrapolated back, the mode fit "
@@ -217,7 +212,7 @@ Detection detect(const AuditData& data, const AuditModel& current) {
                 "the attack's gap from %.2f to %.2f dB (in %zu of %zu strikes), by %.1f dB in the %.0f cells it "
                 "fills",
                 1e3 * kAttackS, d.statistic, 1e3 * noise_s, with.transient.low_hz, with.transient.high_hz,
-                attack_before, attack_after, better, before.size(), filled.gain_db, filled.cells);
+                attack_before, attack_after, better, before.size(), attacks.filled_gain_db, attacks.filled_cells);
   d.evidence = buf;
   return d;
 }

@@ -125,13 +125,8 @@ std::size_t drop_modes(const AuditData& data, AuditModel& model, const std::vect
   keep_rows(model.hit.loading);
   for (auto& per_mode : model.hit.shape_ln) keep_rows(per_mode);
   if (model.law_fitted && model.law.kind == DampingKind::rayleigh && model.extra_decay_per_s.empty()) {
-    std::vector<std::size_t> index;
-    const std::vector<DampingPoint> all = track_median_points(data, train, &index);
-    std::vector<DampingPoint> kept;
-    for (std::size_t i = 0; i < index.size(); ++i)
-      for (const AuditMode& m : model.modes)
-        if (m.track == int(index[i])) kept.push_back(all[i]);
-    model.law = trimmed_law(kept, DampingKind::rayleigh);
+    const std::vector<bool> kept = modelled_tracks(data, model);
+    model.law = trimmed_law(track_median_points(data, train, nullptr, &kept), DampingKind::rayleigh);
     apply_law(model);
   }
   fit_amplitudes(model, data, train);
