@@ -12,7 +12,8 @@
 // holds part of that mode's reverberation. The extension drops the tracks a rule names the room's,
 // fits the room coarsely, reads every mode's amplitude again from the spectrograms with the room in
 // the model (dropping a mode beside a stronger one when the room's answer fits better without it),
-// refits the law and amplitudes on what is left, and fits the room.
+// refits the law and amplitudes on what is left, fits the room, and reads every mode's amplitude again
+// in the room fitted.
 // Detector: the extension lowers the in-sample gap by enough, and the room itself (its reverberant part
 // and its dry amplitudes) by some of it: dropping tracks and reading amplitudes again alone do not
 // count as a room. A strong room also makes the extracted decays of a mode differ from strike to
@@ -213,7 +214,9 @@ void extend(const AuditData& data, AuditModel& model, const std::vector<std::siz
     with_tail(data, plain, loudest, false, &tail_cv);
     model = room_cv <= tail_cv ? std::move(room) : with_tail(data, plain, loudest, true);
   }
-  // Amplitudes and gains of every training strike (the fits saw the loudest).
+  // Each mode's amplitude in the fitted room (they were read in the guessed one), then the amplitudes
+  // and gains of every training strike (the fits saw the loudest).
+  read_amplitudes_in_room(data, model, loudest);
   fit_amplitudes(model, data, train);
 }
 

@@ -37,4 +37,10 @@ RoomFit fit_room(const AuditData& data, const AuditModel& without, const std::ve
 std::vector<double> read_mode_amplitudes(const AuditData& data, const AuditModel& without, const Room& room,
                                          const std::vector<std::size_t>& strikes, const std::vector<bool>& may_drop);
 
+// The model's own room kept, every mode's room_gain read again (none dropped), in up to two passes
+// while the gap over `strikes` falls: the amplitudes were read in a guessed room, and reading scores
+// each mode on a prediction linearised around the renderings, so a second rendering reads them closer.
+// Nothing happens without a room.
+void read_amplitudes_in_room(const AuditData& data, AuditModel& model, const std::vector<std::size_t>& strikes);
+
 }  // namespace ms::audit

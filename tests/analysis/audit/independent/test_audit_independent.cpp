@@ -22,6 +22,7 @@
 #include "analysis/audit/baseline_fit.hpp"
 #include "analysis/audit/cross_validation.hpp"
 #include "analysis/audit/effect_catalog.hpp"
+#include "analysis/audit/room_fit.hpp"
 #include "../audit_cases.hpp"
 #include "analysis/audit/shared_decay_excess.hpp"
 #include "independent_generator.hpp"
@@ -265,6 +266,44 @@ TEST(AuditIndependent, ARoomsScatteredDecaysAreNotTakenForAHand) {
   EXPECT_GE(r.share_above_floor, 0.5);
 }
 
+// The room's extension reads every mode's amplitude in the room it guessed, then fits the room: the
+// amplitudes no longer fit the fitted one, and a prediction linearised around one rendering reads them
+// only part of the way. Read again in the fitted room, rendering once per pass, the gap falls and never
+// rises; on tuning seeds 42106 and 42128 (rooms alone, strength 0.3) the second, wrong name the room's
+// leftovers drew before (a burst) is gone.
+TEST(AuditIndependent, AmplitudesReadAgainInTheFittedRoomLowerTheGap) {
+  for (std::uint64_t seed : {42106u, 42128u}) {
+    const indep::IndependentCase c = indep::generate_independent_case(seed, {"reverberation"}, {0.3});
+    const audit::AuditData data = audit::make_audit_data(c.recordings);
+    const audit::AuditResult r = audit::run_audit(data);
+    ASSERT_EQ(r.named.size(), 1u) << seed << ": " << r.named.back().effect;
+    EXPECT_EQ(r.named.front().effect, "reverberation") << seed;
+    ASSERT_TRUE(r.final_model.room.enabled) << seed;
+
+    const std::vector<std::size_t> all = audit::all_strikes(data);
+    audit::AuditModel as_read = r.final_model;
+    const double read_db = audit::mean_gap(as_read, data, all);
+    audit::read_amplitudes_in_room(data, as_read, all);
+    const double again_db = audit::mean_gap(as_read, data, all);
+    audit::AuditModel unread = r.final_model;
+    for (audit::AuditMode& m : unread.modes) m.room_gain = 1.0;
+    const double unread_db = audit::mean_gap(unread, data, all);
+    audit::read_amplitudes_in_room(data, unread, all);
+    const double reread_db = audit::mean_gap(unread, data, all);
+    std::printf("seed %llu: gap with the amplitudes as measured %.3f dB, read in the room %.3f dB; the audit's %.3f dB, "
+                "read again %.3f dB\n", static_cast<unsigned long long>(seed), unread_db, reread_db, read_db, again_db);
+    EXPECT_LT(reread_db, unread_db - 0.1) << seed;
+    EXPECT_LE(again_db, read_db) << seed;
+  }
+  // Without a room nothing is read.
+  const indep::IndependentCase dry = indep::generate_independent_case(42106, {}, {});
+  const audit::AuditData data = audit::make_audit_data(dry.recordings);
+  audit::AuditModel plain = audit::run_audit(data).final_model;
+  const audit::AuditModel before = plain;
+  audit::read_amplitudes_in_room(data, plain, audit::all_strikes(data));
+  for (std::size_t n = 0; n < plain.modes.size(); ++n) EXPECT_EQ(plain.modes[n].room_gain, before.modes[n].room_gain);
+}
+
 TEST(AuditIndependent, DISABLED_Tuning) {
   const char* only = std::getenv("INDEPENDENT_TUNING_ONLY");
   const Tally tally = run_cases(env_or("INDEPENDENT_TUNING_FIRST", 40000), env_or("INDEPENDENT_TUNING_COUNT", 44), true, true,
@@ -272,7 +311,7 @@ TEST(AuditIndependent, DISABLED_Tuning) {
   EXPECT_GT(tally.clean, 0);
 }
 
-// Held-out seeds 44440-44659 (never used for tuning: not 1000-1179, 5000-15719, 40000-42999, 44660-45979; 41000-41219,
+// Held-out seeds 44440-44659 (never used for tuning: not 1000-1179, 5000-15719, 40000-42999, 44660-46199; 41000-41219,
 // 43000-43219, 44000-44219 and 44220-44439 held out earlier audits), strengths drawn from (0, 1), in two
 // halves (each 110 cases, 10 of each effect alone, 20 clean, 10 pairs; ~4 min each on two cores): the
 // audit must meet the bars on each half. Disabled because it does not yet: the one run on these seeds
@@ -286,7 +325,8 @@ TEST(AuditIndependent, DISABLED_Tuning) {
 // 45320-45539 (one run, same detectors) every bar over the 220 and on the first half, bursts 11/13 on
 // the second; 45540-45759 (after the doublet fix) the halving 173/180, but rooms 20/23, bursts 18/23;
 // 45760-45979 (with the bursts' filled cells) bursts 21/21, the halving 171/180, but rooms 25/29 and
-// damping_law 25/30 (each law missed beside a room or a hand).
+// damping_law 25/30 (each law missed beside a room or a hand); 45980-46199 (the amplitudes read again in the
+// fitted room) clean 40/40, laws 23/24, the halving 173/180, but rooms 24/28, doublets 22/25, bursts 21/24.
 // INDEPENDENT_VERBOSE prints every case; INDEPENDENT_HELDOUT_FIRST runs the same protocol from another
 // first seed (the second half 110 after it). Enable when a change meets the bars on fresh seeds, not on these.
 std::size_t held_out_first() { return env_or("INDEPENDENT_HELDOUT_FIRST", 44440); }
