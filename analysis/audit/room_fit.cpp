@@ -318,13 +318,13 @@ void read_amplitudes_in_room(const AuditData& data, AuditModel& model, const std
   constexpr int kMaxPasses = 2;
   constexpr double kMinGainDb = 0.005;
   const RoomRates rates = room_rates(model.room, data.measured.sample_rate_hz);
-  const std::vector<bool> keep_all(model.modes.size(), false);
+  const std::vector<bool> drop_none(model.modes.size(), false);
   std::optional<RoomObjective> objective;
   objective.emplace(data, model, strikes, &model.room);
   double gap = objective->gap(rates.k_per_sample, rates.sigma2);
   for (int pass = 0; pass < kMaxPasses; ++pass) {
     AuditModel next = model;
-    const std::vector<double> read = objective->read_amplitudes(rates.k_per_sample, rates.sigma2, keep_all);
+    const std::vector<double> read = objective->read_amplitudes(rates.k_per_sample, rates.sigma2, drop_none);
     for (std::size_t n = 0; n < read.size(); ++n) next.modes[n].room_gain *= read[n];
     objective.emplace(data, next, strikes, &next.room);
     const double next_gap = objective->gap(rates.k_per_sample, rates.sigma2);

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # A run of scripts/test.sh killed at a bad moment leaves its PostgreSQL folder behind, with the server
 # still running or already gone (its postmaster.pid stays either way). The next run must clear both
-# and start its own server; it once ended without a word on the second kind.
+# and start its own server, under test.sh's `set -e`, where pg_ctl's failing stop of a gone server
+# must not end it.
 set -euo pipefail
 source_dir="$1"
 source "$source_dir/scripts/test_postgres.sh"
