@@ -151,7 +151,7 @@ AuditModel room_from(const AuditData& data, AuditModel roomed, const Room& guess
     roomed.modes[n].room_gain *= read[n];
   }
   drop_modes(data, roomed, explained, strikes);
-  *fit = fit_room(data, roomed, strikes);
+  *fit = fit_room(data, roomed, strikes, false, &guess);
   roomed.room = fit->room;
   return roomed;
 }

@@ -231,10 +231,25 @@ std::array<double, kRoomBands> log_rt60_curve(double a, double b, double c) {
   return lt;
 }
 
+// The curve's coefficients (a, b, c) nearest a room's log RT60s (least squares; the basis 1, u,
+// u^2 - 1/2 over the seven bands is orthogonal, so each coefficient is a projection).
+std::array<double, 3> curve_of(const Room& room) {
+  std::array<double, 3> num{}, den{};
+  for (std::size_t i = 0; i < kRoomBands; ++i) {
+    const double u = (double(i) - 3.0) / 3.0, lt = std::log(room.rt60_s[i]);
+    const std::array<double, 3> basis{1.0, u, u * u - 0.5};
+    for (std::size_t j = 0; j < 3; ++j) {
+      num[j] += basis[j] * lt;
+      den[j] += basis[j] * basis[j];
+    }
+  }
+  return {num[0] / den[0], num[1] / den[1], num[2] / den[2]};
+}
+
 }  // namespace
 
 RoomFit fit_room(const AuditData& data, const AuditModel& without, const std::vector<std::size_t>& strikes,
-                 bool coarse_only) {
+                 bool coarse_only, const Room* start) {
   RoomObjective objective(data, without, strikes);
   const double fs = objective.sample_rate();
   const auto rates_of = [&](const std::array<double, kRoomBands>& log_rt60) {
@@ -261,6 +276,11 @@ RoomFit fit_room(const AuditData& data, const AuditModel& without, const std::ve
   // 2. The curve's three coefficients and the level, twice: each time from renderings with the dry
   // amplitudes of the room found so far (the closed-form corrections stay small).
   std::array<double, 4> p{lt_best, 0.0, 0.0, std::log(room_sigma2(rates_of(log_rt60_curve(lt_best, 0.0, 0.0)), drr_best, fs))};
+  std::optional<std::array<double, 4>> from_start;
+  if (start && start->rt60_s.size() == kRoomBands) {
+    const std::array<double, 3> curve = curve_of(*start);
+    from_start = {curve[0], curve[1], curve[2], std::log(room_sigma2(rates_of(log_rt60_curve(curve[0], curve[1], curve[2])), start->drr_db, fs))};
+  }
   const auto room_of = [&](const std::array<double, 4>& q) {
     Room room;
     room.enabled = true;
@@ -272,10 +292,6 @@ RoomFit fit_room(const AuditData& data, const AuditModel& without, const std::ve
   const auto gap_of = [&](const std::vector<double>& q) {
     return objective.gap(rates_of(log_rt60_curve(q[0], q[1], q[2])), std::exp(q[3]));
   };
-  BoxedSearchOptions search;
-  search.lower = {std::log(kMinRoomRt60S), -3.0, -3.0, p[3] - 12.0};
-  search.upper = {std::log(kMaxRoomRt60S), 3.0, 3.0, p[3] + 12.0};
-  search.step = {0.3, 0.3, 0.3, 0.7};
   RoomFit fit;
   fit.grid_cv_gap_db = leave_one_out_gap(table);
   for (std::size_t b = 0; b < kRoomBands; ++b) fit.band_measured.push_back(objective.heard(b));
@@ -284,9 +300,28 @@ RoomFit fit_room(const AuditData& data, const AuditModel& without, const std::ve
     fit.gap_db = best;
     return fit;
   }
+  // The start and the grid's best compared each from its own rendering (far from the measured
+  // amplitudes the closed-form corrections are not small).
+  bool based = false;
+  if (from_start) {
+    const Room grid = room_of(p), begun = room_of(*from_start);
+    objective.rebase(&grid);
+    const double grid_gap = objective.gap(rates_of(log_rt60_curve(p[0], p[1], p[2])), std::exp(p[3]));
+    objective.rebase(&begun);
+    const std::array<double, 4>& q = *from_start;
+    if (objective.gap(rates_of(log_rt60_curve(q[0], q[1], q[2])), std::exp(q[3])) < grid_gap) {
+      p = q;
+      based = true;
+    }
+  }
+  BoxedSearchOptions search;
+  search.lower = {std::log(kMinRoomRt60S), -3.0, -3.0, p[3] - 12.0};
+  search.upper = {std::log(kMaxRoomRt60S), 3.0, 3.0, p[3] + 12.0};
+  search.step = {0.3, 0.3, 0.3, 0.7};
   for (std::size_t evaluations : {70, 25}) {
     const Room current = room_of(p);
-    objective.rebase(&current);
+    if (!based) objective.rebase(&current);
+    based = false;
     search.max_evaluations = evaluations;
     const BoxedSearchResult found = nelder_mead_boxed(gap_of, {p.begin(), p.end()}, search);
     std::copy(found.x.begin(), found.x.end(), p.begin());

@@ -25,9 +25,12 @@ struct RoomFit {
 // `without` must not contain a room. Coarse: one RT60 for every band and the DRR on a grid; then log
 // RT60 as a quadratic over the octave bands and the reverberant level by Nelder-Mead (rooms' RT60s
 // vary smoothly with frequency, and a band whose modes all outlast the room barely moves the gap).
-// coarse_only: the grid's room (one RT60 for every band), for quick comparisons.
+// coarse_only: the grid's room (one RT60 for every band), for quick comparisons. start: a room the
+// amplitudes were read in, also a candidate (its RT60s taken to the nearest such curve); the search
+// starts from it where it beats the grid's best (from the grid alone a room read in a strong guess can
+// fall back to a weak one).
 RoomFit fit_room(const AuditData& data, const AuditModel& without, const std::vector<std::size_t>& strikes,
-                 bool coarse_only = false);
+                 bool coarse_only = false, const Room* start = nullptr);
 
 // With `room` in the model, each mode's amplitude read again from the strikes' spectrograms, one mode
 // after another (in a room the extraction's amplitude of a mode also holds parts of its reverberation

@@ -304,6 +304,24 @@ TEST(AuditIndependent, AmplitudesReadAgainInTheFittedRoomLowerTheGap) {
   for (std::size_t n = 0; n < plain.modes.size(); ++n) EXPECT_EQ(plain.modes[n].room_gain, before.modes[n].room_gain);
 }
 
+// The room fit starts from the room the amplitudes were read in where that room scores better than the
+// fit's own coarse grid (each scored from its own rendering): from the grid alone, amplitudes read in a
+// strong room (RT60 0.6 s, DRR 0 dB) fell back to a weak, long room (DRR 34 dB) that silenced explains
+// nothing, and the strikes of held-out seed 46031 (RT60 0.88-0.36 s, DRR 1.3 dB) were named hand damping.
+TEST(AuditIndependent, ARoomReadInAStrongGuessIsNotLostByItsFit) {
+  const indep::IndependentCase c = indep::generate_independent_case(46031, {"reverberation"}, {0.67376562888873259});
+  const audit::AuditResult r = audit::run_audit(audit::make_audit_data(c.recordings));
+  ASSERT_FALSE(r.named.empty());
+  EXPECT_EQ(r.named.front().effect, "reverberation") << r.named.front().evidence;
+  ASSERT_TRUE(r.final_model.room.enabled);
+  const ms::Room& room = r.final_model.room;
+  std::printf("fitted RT60 %.2f s at 1 kHz, DRR %.1f dB; the generator's %.2f s (500-2000 Hz), %.1f dB\n",
+              room.rt60_s[3], room.drr_db, c.room.rt60_s[1], c.room.drr_db);
+  EXPECT_NEAR(room.drr_db, c.room.drr_db, 3.0);
+  EXPECT_GT(room.rt60_s[3], 0.5 * c.room.rt60_s[1]);
+  EXPECT_LT(room.rt60_s[3], 1.5 * c.room.rt60_s[1]);
+}
+
 TEST(AuditIndependent, DISABLED_Tuning) {
   const char* only = std::getenv("INDEPENDENT_TUNING_ONLY");
   const Tally tally = run_cases(env_or("INDEPENDENT_TUNING_FIRST", 40000), env_or("INDEPENDENT_TUNING_COUNT", 44), true, true,
@@ -311,7 +329,7 @@ TEST(AuditIndependent, DISABLED_Tuning) {
   EXPECT_GT(tally.clean, 0);
 }
 
-// Held-out seeds 44440-44659 (never used for tuning: not 1000-1179, 5000-15719, 40000-42999, 44660-46199; 41000-41219,
+// Held-out seeds 44440-44659 (never used for tuning: not 1000-1179, 5000-15719, 40000-42999, 44660-46419; 41000-41219,
 // 43000-43219, 44000-44219 and 44220-44439 held out earlier audits), strengths drawn from (0, 1), in two
 // halves (each 110 cases, 10 of each effect alone, 20 clean, 10 pairs; ~4 min each on two cores): the
 // audit must meet the bars on each half. Disabled because it does not yet: the one run on these seeds
@@ -326,7 +344,9 @@ TEST(AuditIndependent, DISABLED_Tuning) {
 // the second; 45540-45759 (after the doublet fix) the halving 173/180, but rooms 20/23, bursts 18/23;
 // 45760-45979 (with the bursts' filled cells) bursts 21/21, the halving 171/180, but rooms 25/29 and
 // damping_law 25/30 (each law missed beside a room or a hand); 45980-46199 (the amplitudes read again in the
-// fitted room) clean 40/40, laws 23/24, the halving 173/180, but rooms 24/28, doublets 22/25, bursts 21/24.
+// fitted room) clean 40/40, laws 23/24, the halving 173/180, but rooms 24/28, doublets 22/25, bursts 21/24;
+// 46200-46419 (the room fit starting from the room the amplitudes were read in) clean 40/40, doublets
+// 26/26, bursts 23/23, the halving 177/180, but rooms 18/22.
 // INDEPENDENT_VERBOSE prints every case; INDEPENDENT_HELDOUT_FIRST runs the same protocol from another
 // first seed (the second half 110 after it). Enable when a change meets the bars on fresh seeds, not on these.
 std::size_t held_out_first() { return env_or("INDEPENDENT_HELDOUT_FIRST", 44440); }
