@@ -114,7 +114,8 @@ AuditResult run_audit(const AuditData& data, const std::optional<ModalModel>& gi
   AuditModel current;
   double gap = in_sample_gap(data, recipe, &current);
   std::vector<AuditModel> folds;  // the current recipe's fold models (for the repeatability floor)
-  double cv = cross_validated_gap(data, recipe, &folds, &result.strike_cv_gap_before_db);
+  TrainedFolds trained;           // ... and before each held-out strike's latent values (candidates start there)
+  double cv = cross_validated_gap(data, recipe, &folds, &result.strike_cv_gap_before_db, nullptr, &trained);
   result.baseline = current;
   result.modes = current.modes.size();
   result.gap_before_db = gap;
@@ -129,6 +130,7 @@ AuditResult run_audit(const AuditData& data, const std::optional<ModalModel>& gi
       const Effect* effect;
       Detection detection;
       std::vector<AuditModel> folds;
+      TrainedFolds trained;
       double cv_gap_db, improvement_db;
     };
     std::vector<Passed> passed;
@@ -168,9 +170,11 @@ AuditResult run_audit(const AuditData& data, const std::optional<ModalModel>& gi
         Recipe with = recipe;
         with.effects.push_back(&e);
         std::vector<AuditModel> with_folds;
-        c.cv_gap_db = cross_validated_gap(data, with, &with_folds);
+        TrainedFolds with_trained;
+        c.cv_gap_db = cross_validated_gap(data, with, &with_folds, nullptr, &trained, &with_trained);
         c.improvement_db = cv - c.cv_gap_db - e.penalty_db;
-        if (c.improvement_db > 0.0) passed.push_back({&e, det, std::move(with_folds), c.cv_gap_db, c.improvement_db});
+        if (c.improvement_db > 0.0)
+          passed.push_back({&e, det, std::move(with_folds), std::move(with_trained), c.cv_gap_db, c.improvement_db});
       }
       round.push_back(c);
     }
@@ -192,6 +196,7 @@ AuditResult run_audit(const AuditData& data, const std::optional<ModalModel>& gi
     gap = next_gap;
     cv = chosen->cv_gap_db;
     folds = std::move(chosen->folds);
+    trained = std::move(chosen->trained);
     current = std::move(next);
   }
   result.final_model = current;

@@ -1,5 +1,7 @@
 #include "analysis/audit/cross_validation.hpp"
 
+#include <algorithm>
+
 #include "analysis/audit/baseline_fit.hpp"
 #include "analysis/audit/parallel_indices.hpp"
 
@@ -12,32 +14,62 @@ void adapt_strike(const AuditData& data, const Recipe& recipe, AuditModel& model
   fit_gain(model, data, s);
 }
 
-AuditModel fit_recipe(const AuditData& data, const Recipe& recipe, const std::vector<std::size_t>& train) {
-  AuditModel model = recipe.given ? *recipe.given : fit_baseline(data, train);
-  for (std::size_t i = 0; i < recipe.effects.size(); ++i) {
+namespace {
+
+// Effects first.. of the recipe extended on `train` in order, the train strikes' latent values after each.
+void extend_recipe(const AuditData& data, const Recipe& recipe, AuditModel& model, const std::vector<std::size_t>& train,
+                   std::size_t first) {
+  for (std::size_t i = first; i < recipe.effects.size(); ++i) {
     recipe.effects[i]->extend(data, model, train);
     const Recipe so_far{recipe.given, {recipe.effects.begin(), recipe.effects.begin() + std::ptrdiff_t(i + 1)}};
     for (std::size_t s : train) adapt_strike(data, so_far, model, s);
   }
+}
+
+void name_effects(const Recipe& recipe, AuditModel& model) {
   model.effects.clear();
   for (const Effect* e : recipe.effects) model.effects.push_back(e->name);
+}
+
+// Whether `from` holds fold models of the first effects of `recipe` for `strikes` folds.
+bool starts(const TrainedFolds& from, const Recipe& recipe, std::size_t strikes) {
+  return from.models.size() == strikes && from.effects.size() <= recipe.effects.size() &&
+         std::equal(from.effects.begin(), from.effects.end(), recipe.effects.begin());
+}
+
+}  // namespace
+
+AuditModel fit_recipe(const AuditData& data, const Recipe& recipe, const std::vector<std::size_t>& train) {
+  AuditModel model = recipe.given ? *recipe.given : fit_baseline(data, train);
+  extend_recipe(data, recipe, model, train, 0);
+  name_effects(recipe, model);
   return model;
 }
 
 double cross_validated_gap(const AuditData& data, const Recipe& recipe, std::vector<AuditModel>* fold_models,
-                           std::vector<double>* strike_gaps_db) {
+                           std::vector<double>* strike_gaps_db, const TrainedFolds* from, TrainedFolds* trained) {
   const std::size_t n = data.strike_count();
   if (fold_models) fold_models->clear();
   if (strike_gaps_db) strike_gaps_db->clear();
+  if (trained) *trained = {recipe.effects, {}};
   if (n < 2) return in_sample_gap(data, recipe);
+  const bool resume = from && starts(*from, recipe, n);
   // The folds stand alone: they run on the machine's cores, and are summed in order.
-  std::vector<AuditModel> models(n);
+  std::vector<AuditModel> models(n), fitted(trained ? n : 0);
   std::vector<double> gaps(n);
   parallel_indices(n, [&](std::size_t k) {
     std::vector<std::size_t> train;
     for (std::size_t s = 0; s < n; ++s)
       if (s != k) train.push_back(s);
-    models[k] = fit_recipe(data, recipe, train);
+    if (resume) {
+      models[k] = from->models[k];
+      extend_recipe(data, recipe, models[k], train, from->effects.size());
+    } else {
+      models[k] = recipe.given ? *recipe.given : fit_baseline(data, train);
+      extend_recipe(data, recipe, models[k], train, 0);
+    }
+    if (trained) fitted[k] = models[k];
+    name_effects(recipe, models[k]);
     adapt_strike(data, recipe, models[k], k);
     gaps[k] = strike_gap(models[k], data, k).gap_db;
   });
@@ -45,6 +77,7 @@ double cross_validated_gap(const AuditData& data, const Recipe& recipe, std::vec
   for (double g : gaps) sum += g;
   if (fold_models) *fold_models = std::move(models);
   if (strike_gaps_db) *strike_gaps_db = gaps;
+  if (trained) trained->models = std::move(fitted);
   return sum / double(n);
 }
 

@@ -22,11 +22,23 @@ AuditModel fit_recipe(const AuditData& data, const Recipe& recipe, const std::ve
 // The latent values of strike s (gain, then each effect's, then the gain again).
 void adapt_strike(const AuditData& data, const Recipe& recipe, AuditModel& model, std::size_t strike);
 
+// Fold k's model fitted on every strike but k, before strike k's latent values, for a recipe's
+// effects. Fitting is deterministic, so a recipe that adds effects to these starts its folds from them
+// and extends only the new ones: the audit's later rounds then do not refit the baseline and every
+// effect named before (a room's fit among them) once per candidate and fold.
+struct TrainedFolds {
+  std::vector<const Effect*> effects;
+  std::vector<AuditModel> models;  // one per strike held out
+};
+
 // Mean held-out gap (dB) over leave-one-strike-out folds; with a single strike the in-sample gap.
 // fold_models (if given) receives fold k's model (fitted without strike k, then given its latent values)
-// for every k; strike_gaps_db (if given) strike k's held-out gap.
+// for every k; strike_gaps_db (if given) strike k's held-out gap. from (if given, for the same
+// recipe.given, its effects the first of recipe.effects): the folds start from its models. trained (if
+// given) receives this recipe's.
 double cross_validated_gap(const AuditData& data, const Recipe& recipe, std::vector<AuditModel>* fold_models = nullptr,
-                           std::vector<double>* strike_gaps_db = nullptr);
+                           std::vector<double>* strike_gaps_db = nullptr, const TrainedFolds* from = nullptr,
+                           TrainedFolds* trained = nullptr);
 
 // In-sample: fitted on every strike, mean gap over every strike.
 double in_sample_gap(const AuditData& data, const Recipe& recipe, AuditModel* fitted = nullptr);

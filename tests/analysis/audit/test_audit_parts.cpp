@@ -10,6 +10,8 @@
 #include "analysis/audit/augmented_paramset.hpp"
 #include "analysis/audit/baseline_fit.hpp"
 #include "analysis/audit/contact_spectrum.hpp"
+#include "analysis/audit/cross_validation.hpp"
+#include "analysis/audit/effect_catalog.hpp"
 #include "analysis/audit/gap_metric.hpp"
 #include "analysis/audit/gap_target.hpp"
 #include "analysis/audit/hidden_effect_generator.hpp"
@@ -250,6 +252,41 @@ TEST(AuditGap, ABurstsGapReadsOnlyTheFramesItChanged) {
 
 // A strong burst (tuning seed 1007: 5.9 ms at -16.5 dB re the direct sound): named first, fitted near
 // its true duration and level, and the gap (which sees the attack at 2.9 ms) shrinks by more than half.
+// Fitting is deterministic, so the folds of a recipe that adds an effect, started from the folds
+// trained for the recipe before it, equal folds fitted afresh, bit for bit; trained folds of another
+// recipe are not taken up.
+TEST(AuditCrossValidation, FoldsResumedFromTrainedModelsEqualFoldsFittedAfresh) {
+  const HiddenCase hc = generate_hidden_case(31, {"support_damping", "noise_floor"}, {0.8, 0.8});
+  const AuditData data = make_audit_data(hc.recordings);
+  const std::vector<Effect> catalog = effect_catalog();
+  const Effect* hand = find_effect(catalog, "support_damping");
+  const Effect* floor = find_effect(catalog, "noise_floor");
+  const Recipe first{std::nullopt, {hand}}, both{std::nullopt, {hand, floor}}, other{std::nullopt, {floor}};
+  TrainedFolds trained, trained_other;
+  cross_validated_gap(data, first, nullptr, nullptr, nullptr, &trained);
+  cross_validated_gap(data, other, nullptr, nullptr, nullptr, &trained_other);
+  ASSERT_EQ(trained.models.size(), data.strike_count());
+  std::vector<AuditModel> fresh_folds, resumed_folds, ignored_folds;
+  std::vector<double> fresh_gaps, resumed_gaps, ignored_gaps;
+  const double fresh = cross_validated_gap(data, both, &fresh_folds, &fresh_gaps);
+  const double resumed = cross_validated_gap(data, both, &resumed_folds, &resumed_gaps, &trained);
+  const double ignored = cross_validated_gap(data, both, &ignored_folds, &ignored_gaps, &trained_other);
+  EXPECT_EQ(resumed, fresh);
+  EXPECT_EQ(ignored, fresh);
+  EXPECT_EQ(resumed_gaps, fresh_gaps);
+  ASSERT_EQ(resumed_folds.size(), fresh_folds.size());
+  for (std::size_t k = 0; k < fresh_folds.size(); ++k) {
+    EXPECT_EQ(resumed_folds[k].gain, fresh_folds[k].gain) << k;
+    EXPECT_EQ(resumed_folds[k].effects, fresh_folds[k].effects) << k;
+    ASSERT_EQ(resumed_folds[k].modes.size(), fresh_folds[k].modes.size()) << k;
+    for (std::size_t n = 0; n < fresh_folds[k].modes.size(); ++n) {
+      EXPECT_EQ(resumed_folds[k].modes[n].amp, fresh_folds[k].modes[n].amp) << k << " " << n;
+      EXPECT_EQ(resumed_folds[k].modes[n].decay_per_s, fresh_folds[k].modes[n].decay_per_s) << k << " " << n;
+    }
+    EXPECT_EQ(resumed_folds[k].extra_decay_per_s, fresh_folds[k].extra_decay_per_s) << k;
+  }
+}
+
 TEST(AuditTransient, StrongBurstIsNamedFittedAndExplained) {
   const HiddenCase hc = generate_hidden_case(1007, {"residual_transient"}, {0.9});
   const AuditData data = make_audit_data(hc.recordings);
