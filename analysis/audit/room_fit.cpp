@@ -231,19 +231,22 @@ std::array<double, kRoomBands> log_rt60_curve(double a, double b, double c) {
   return lt;
 }
 
-// The curve's coefficients (a, b, c) nearest a room's log RT60s (least squares; the basis 1, u,
-// u^2 - 1/2 over the seven bands is orthogonal, so each coefficient is a projection).
+// The curve's coefficients (a, b, c) nearest a room's log RT60s, by least squares: u is orthogonal to
+// 1 and to u^2 - 1/2 over the seven bands, so b is a projection; a and c solve a 2 x 2 system.
 std::array<double, 3> curve_of(const Room& room) {
-  std::array<double, 3> num{}, den{};
+  double n = 0.0, s = 0.0, q = 0.0, uu = 0.0, y1 = 0.0, yu = 0.0, yv = 0.0;
   for (std::size_t i = 0; i < kRoomBands; ++i) {
-    const double u = (double(i) - 3.0) / 3.0, lt = std::log(room.rt60_s[i]);
-    const std::array<double, 3> basis{1.0, u, u * u - 0.5};
-    for (std::size_t j = 0; j < 3; ++j) {
-      num[j] += basis[j] * lt;
-      den[j] += basis[j] * basis[j];
-    }
+    const double u = (double(i) - 3.0) / 3.0, v = u * u - 0.5, lt = std::log(room.rt60_s[i]);
+    n += 1.0;
+    s += v;
+    q += v * v;
+    uu += u * u;
+    y1 += lt;
+    yu += lt * u;
+    yv += lt * v;
   }
-  return {num[0] / den[0], num[1] / den[1], num[2] / den[2]};
+  const double det = n * q - s * s;
+  return {(q * y1 - s * yv) / det, yu / uu, (n * yv - s * y1) / det};
 }
 
 }  // namespace
