@@ -31,6 +31,11 @@ void name_effects(const Recipe& recipe, AuditModel& model) {
   for (const Effect* e : recipe.effects) model.effects.push_back(e->name);
 }
 
+// The model a recipe's effects extend: its given baseline, or one fitted on `train`.
+AuditModel baseline_of(const AuditData& data, const Recipe& recipe, const std::vector<std::size_t>& train) {
+  return recipe.given ? *recipe.given : fit_baseline(data, train);
+}
+
 // Whether `from` holds fold models of the first effects of `recipe` for `strikes` folds.
 bool starts(const TrainedFolds& from, const Recipe& recipe, std::size_t strikes) {
   return from.models.size() == strikes && from.effects.size() <= recipe.effects.size() &&
@@ -40,7 +45,7 @@ bool starts(const TrainedFolds& from, const Recipe& recipe, std::size_t strikes)
 }  // namespace
 
 AuditModel fit_recipe(const AuditData& data, const Recipe& recipe, const std::vector<std::size_t>& train) {
-  AuditModel model = recipe.given ? *recipe.given : fit_baseline(data, train);
+  AuditModel model = baseline_of(data, recipe, train);
   extend_recipe(data, recipe, model, train, 0);
   name_effects(recipe, model);
   return model;
@@ -61,13 +66,8 @@ double cross_validated_gap(const AuditData& data, const Recipe& recipe, std::vec
     std::vector<std::size_t> train;
     for (std::size_t s = 0; s < n; ++s)
       if (s != k) train.push_back(s);
-    if (resume) {
-      models[k] = from->models[k];
-      extend_recipe(data, recipe, models[k], train, from->effects.size());
-    } else {
-      models[k] = recipe.given ? *recipe.given : fit_baseline(data, train);
-      extend_recipe(data, recipe, models[k], train, 0);
-    }
+    models[k] = resume ? from->models[k] : baseline_of(data, recipe, train);
+    extend_recipe(data, recipe, models[k], train, resume ? from->effects.size() : 0);
     if (trained) fitted[k] = models[k];
     name_effects(recipe, models[k]);
     adapt_strike(data, recipe, models[k], k);

@@ -279,11 +279,6 @@ RoomFit fit_room(const AuditData& data, const AuditModel& without, const std::ve
   // 2. The curve's three coefficients and the level, twice: each time from renderings with the dry
   // amplitudes of the room found so far (the closed-form corrections stay small).
   std::array<double, 4> p{lt_best, 0.0, 0.0, std::log(room_sigma2(rates_of(log_rt60_curve(lt_best, 0.0, 0.0)), drr_best, fs))};
-  std::optional<std::array<double, 4>> from_start;
-  if (start && start->rt60_s.size() == kRoomBands) {
-    const std::array<double, 3> curve = curve_of(*start);
-    from_start = {curve[0], curve[1], curve[2], std::log(room_sigma2(rates_of(log_rt60_curve(curve[0], curve[1], curve[2])), start->drr_db, fs))};
-  }
   const auto room_of = [&](const std::array<double, 4>& q) {
     Room room;
     room.enabled = true;
@@ -306,13 +301,14 @@ RoomFit fit_room(const AuditData& data, const AuditModel& without, const std::ve
   // The start and the grid's best compared each from its own rendering (far from the measured
   // amplitudes the closed-form corrections are not small).
   bool based = false;
-  if (from_start) {
-    const Room grid = room_of(p), begun = room_of(*from_start);
+  if (start && start->rt60_s.size() == kRoomBands) {
+    const std::array<double, 3> c = curve_of(*start);
+    const std::array<double, 4> q{c[0], c[1], c[2], std::log(room_sigma2(rates_of(log_rt60_curve(c[0], c[1], c[2])), start->drr_db, fs))};
+    const Room grid = room_of(p), begun = room_of(q);
     objective.rebase(&grid);
-    const double grid_gap = objective.gap(rates_of(log_rt60_curve(p[0], p[1], p[2])), std::exp(p[3]));
+    const double grid_gap = gap_of({p.begin(), p.end()});
     objective.rebase(&begun);
-    const std::array<double, 4>& q = *from_start;
-    if (objective.gap(rates_of(log_rt60_curve(q[0], q[1], q[2])), std::exp(q[3])) < grid_gap) {
+    if (gap_of({q.begin(), q.end()}) < grid_gap) {
       p = q;
       based = true;
     }
