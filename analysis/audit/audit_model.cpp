@@ -133,7 +133,8 @@ ModalModel dry_strike_model(const AuditModel& model, std::size_t s, double fs, s
 Spectra predict_spectra(const AuditModel& model, const AuditData& data, std::size_t s, double* direct_energy,
                         bool reverberant) {
   const MeasuredStrikes& ms_ = data.measured;
-  const ModalModel modal = dry_strike_model(model, s, ms_.sample_rate_hz);
+  std::vector<std::size_t> owner;
+  const ModalModel modal = dry_strike_model(model, s, ms_.sample_rate_hz, &owner);
   const RoomRates rates = model.room.enabled ? room_rates(model.room, ms_.sample_rate_hz) : RoomRates{};
   Excitation impulse;  // the contact is already folded into amplitudes and phases
   const std::size_t samples = ms_.strikes[s].samples.size();
@@ -145,7 +146,9 @@ Spectra predict_spectra(const AuditModel& model, const AuditData& data, std::siz
   for (std::size_t r = 0; r < kResolutions; ++r) {
     if (model.room.enabled && reverberant) {
       const RoomGrid rg = room_grid(ms_.grids[r]);
-      add_room_power(spec[r], ms_.grids[r], rg, room_footprint(ms_.grids[r], rg, modal, &rates), rates);
+      RoomFootprint fp = room_footprint(ms_.grids[r], rg, modal, &rates);
+      for (RoomFootprint::ModeTerms& m : fp.modes) m.answer = model.modes[owner[m.owner]].room_answer;
+      add_room_power(spec[r], ms_.grids[r], rg, fp, rates);
     }
     if (model.reverb.enabled)
       add_decaying_noise_power(spec[r], ms_.grids[r], energy, model.reverb.rt60_s, model.reverb.level_db);

@@ -30,6 +30,9 @@ struct AuditMode {
                             // in the upper mode (the pair keeps the mode's energy)
   double room_gain = 1.0;   // reverberation: the dry amplitude in the room over the one the measured
                             // amplitude implies, read from the spectrograms (room_fit.hpp)
+  double room_answer = 1.0; // ... and the room's reverberant answer to this mode over its expectation: a
+                            // room's response at one frequency is one draw of its noise (the same on every
+                            // strike), so a slow mode may settle above or below its direct sound
 };
 
 struct AuditModel {

@@ -3,7 +3,9 @@
 // existing keys: contact -> excitation raised_cosine, support damping -> effects.support_damping
 // per_mode_decay_per_s, doublets -> both modes listed, noise floor -> effects.noise, room ->
 // effects.room (the modes then the dry ones it is applied to), an additive tail and an attack burst ->
-// effects.reverb and effects.transient.
+// effects.reverb and effects.transient. The room's measured answer to each mode (AuditMode::room_answer)
+// has no key: effects.room renders its own draw of the room's noise, as a second room of the same RT60s
+// and DRR would.
 #pragma once
 #include <cstddef>
 #include <string>

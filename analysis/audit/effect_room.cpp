@@ -13,7 +13,8 @@
 // fits the room coarsely, reads every mode's amplitude again from the spectrograms with the room in
 // the model (dropping a mode beside a stronger one when the room's answer fits better without it),
 // refits the law and amplitudes on what is left, fits the room, and reads every mode's amplitude again
-// in the room fitted.
+// in the room fitted, with the room's answer to it (one draw of the room's noise at the mode's
+// frequency, the same on every strike: a slow mode settles above or below its direct sound).
 // Detector: the extension lowers the in-sample gap by enough, and the room itself (its reverberant part
 // and its dry amplitudes) by some of it: dropping tracks and reading amplitudes again alone do not
 // count as a room. A strong room also makes the extracted decays of a mode differ from strike to
@@ -144,12 +145,10 @@ AuditModel room_from(const AuditData& data, AuditModel roomed, const Room& guess
   const std::vector<double> stronger = room_made(data, roomed, strikes).stronger_db;
   std::vector<bool> may_drop(roomed.modes.size());
   for (std::size_t n = 0; n < may_drop.size(); ++n) may_drop[n] = stronger[n] > 0.0;
-  const std::vector<double> read = read_mode_amplitudes(data, roomed, guess, strikes, may_drop);
-  std::vector<bool> explained(read.size());
-  for (std::size_t n = 0; n < read.size(); ++n) {
-    explained[n] = read[n] == 0.0;
-    roomed.modes[n].room_gain *= read[n];
-  }
+  const ModeReading read = read_mode_amplitudes(data, roomed, guess, strikes, may_drop);
+  read.apply(roomed);
+  std::vector<bool> explained(read.factor.size());
+  for (std::size_t n = 0; n < read.factor.size(); ++n) explained[n] = read.factor[n] == 0.0;
   drop_modes(data, roomed, explained, strikes);
   *fit = fit_room(data, roomed, strikes, false, &guess);
   roomed.room = fit->room;

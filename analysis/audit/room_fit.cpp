@@ -70,8 +70,10 @@ class RoomObjective {
       std::array<RoomFootprint, kResolutions> fp;
       for (std::size_t r = 0; r < kResolutions; ++r) {
         fp[r] = room_footprint(data_.measured.grids[r], room_grids_[r], modal, room ? &rates : nullptr);
-        if (!room)
-          for (RoomFootprint::ModeTerms& m : fp[r].modes) m.extra_power = std::pow(model_.modes[owner[m.owner]].room_gain, 2);
+        for (RoomFootprint::ModeTerms& m : fp[r].modes) {
+          if (!room) m.extra_power = std::pow(model_.modes[owner[m.owner]].room_gain, 2);
+          m.answer = model_.modes[owner[m.owner]].room_answer;
+        }
       }
       for (const RoomFootprint::ModeTerms& m : fp[kDecay].modes) heard_[m.octave] = true;
       footprints_.push_back(std::move(fp));
@@ -79,17 +81,27 @@ class RoomObjective {
     }
   }
 
-  // Each model mode's amplitude read again from the spectrograms with the room (k, sigma2) in the
-  // model, one mode after another: the factor on its dry amplitude in [kMinRead, kMaxRead] that
-  // minimises the mean gap, or 0 where leaving the mode out does better and `may_drop` allows it.
-  std::vector<double> read_amplitudes(const Rates& k, double sigma2, const std::vector<bool>& may_drop) {
+  // Each model mode's amplitude (and with `answers` the room's answer to it) read again from the
+  // spectrograms with the room (k, sigma2) in the model, one mode after another: the factor on its dry
+  // amplitude in [kMinRead, kMaxRead] and the answer within what the room's noise allows
+  // (mode_answer_range) that minimise the mean gap, or factor 0 where leaving the mode out does better
+  // and `may_drop` allows it.
+  ModeReading read_amplitudes(const Rates& k, double sigma2, const std::vector<bool>& may_drop, bool answers) {
     const RoomRates rates{k, sigma2};
     const std::size_t modes = model_.modes.size(), strikes = base_.size();
-    // Per strike and resolution: the prediction; per model mode its power per cell (cell, power).
+    // A mode's power in one cell: its direct part and its reverberant part at answer 1.
+    struct Cell {
+      std::size_t cell;
+      double direct, reverberant;
+    };
+    // Per strike and resolution: the prediction; per model mode its power per cell.
     std::vector<Spectra> predicted(strikes);
-    std::vector<std::vector<std::vector<std::pair<std::size_t, double>>>> power(
-        modes, std::vector<std::vector<std::pair<std::size_t, double>>>(strikes * kResolutions));
+    std::vector<std::vector<std::vector<Cell>>> power(modes, std::vector<std::vector<Cell>>(strikes * kResolutions));
     std::vector<double> sum(strikes, 0.0), cells(strikes, 0.0);
+    ModeReading out{std::vector<double>(modes, 1.0), std::vector<double>(modes, 1.0)};
+    std::vector<std::pair<double, double>> range(modes, {1.0, 1.0});
+    std::vector<bool> ranged(modes, false);
+    for (std::size_t n = 0; n < modes; ++n) out.answer[n] = model_.modes[n].room_answer;
     for (std::size_t i = 0; i < strikes; ++i) {
       predicted[i] = base_[i];
       for (std::size_t r = 0; r < kResolutions; ++r) {
@@ -97,18 +109,29 @@ class RoomObjective {
         add_room_power(predicted[i][r], g, room_grids_[r], footprints_[i][r], rates);
         const RoomFrameSums sums = room_frame_sums(g, rates);
         const std::size_t frames = predicted[i][r].frames, bands = predicted[i][r].bands;
-        std::vector<double> rendered(frames), added(frames);
-        std::vector<std::vector<double>> dense(modes);
+        std::vector<double> rendered(frames), added(frames), reverberant(frames);
+        std::vector<std::vector<double>> direct(modes), reverb(modes);
         for (const RoomFootprint::ModeTerms& m : footprints_[i][r].modes) {
-          std::vector<double>& d = dense[owners_[i][m.owner]];
-          if (d.empty()) d.assign(frames * bands, 0.0);
-          mode_frame_powers(m, g, rates, sums, frames, rendered.data(), added.data());
+          const std::size_t n = owners_[i][m.owner];
+          if (!ranged[n]) {  // from the first strike's rendering (a doublet's pair share a band)
+            range[n] = mode_answer_range(m, rates);
+            ranged[n] = true;
+          }
+          if (direct[n].empty()) {
+            direct[n].assign(frames * bands, 0.0);
+            reverb[n].assign(frames * bands, 0.0);
+          }
+          mode_frame_powers(m, g, rates, sums, frames, rendered.data(), added.data(), reverberant.data());
+          const double dry = mode_dry_factor(m, rates);
           for (std::size_t fr = 0; fr < frames; ++fr)
-            for (const auto& [b, l] : m.leakage) d[fr * bands + b] += l * (rendered[fr] + added[fr]);
+            for (const auto& [b, l] : m.leakage) {
+              direct[n][fr * bands + b] += l * dry * rendered[fr];
+              reverb[n][fr * bands + b] += l * reverberant[fr];
+            }
         }
         for (std::size_t n = 0; n < modes; ++n)
-          for (std::size_t c = 0; c < dense[n].size(); ++c)
-            if (dense[n][c] > 0.0) power[n][i * kResolutions + r].emplace_back(c, dense[n][c]);
+          for (std::size_t c = 0; c < direct[n].size(); ++c)
+            if (direct[n][c] > 0.0 || reverb[n][c] > 0.0) power[n][i * kResolutions + r].push_back({c, direct[n][c], reverb[n][c]});
         const std::vector<double>& measured = target_.measured_db(i, r);
         const double floor = target_.floor_db(i, r);
         for (std::size_t c = 0; c < measured.size(); ++c) {
@@ -119,6 +142,8 @@ class RoomObjective {
         }
       }
     }
+    // A mode's power in a cell at answer a (as mode_frame_powers: never below 1 % of the direct part).
+    const auto own_power = [](const Cell& c, double a) { return std::max(c.direct + a * c.reverberant, 0.01 * c.direct); };
     // The level now of each of mode n's cells, in the order gap_with visits them: the same for every
     // factor tried on the mode, so its logarithm is taken once.
     std::vector<double> now_db;
@@ -128,13 +153,13 @@ class RoomObjective {
         for (std::size_t r = 0; r < kResolutions; ++r) {
           const double floor = target_.floor_db(i, r);
           const std::vector<double>& p = predicted[i][r].power;
-          for (const auto& [cell, own] : power[n][i * kResolutions + r])
-            now_db.push_back(std::max(quick_level_db(p[cell]), floor));
+          for (const Cell& c : power[n][i * kResolutions + r]) now_db.push_back(std::max(quick_level_db(p[c.cell]), floor));
         }
     };
-    // Mean gap with mode n's power scaled by x^2 (all else as predicted now; level_now(n) called since
-    // the last change).
-    const auto gap_with = [&](std::size_t n, double x, bool apply) {
+    // Mean gap with mode n's amplitude scaled by x and its answer a (all else as predicted now;
+    // level_now(n) called since the last change).
+    const auto gap_with = [&](std::size_t n, double x, double a, bool apply) {
+      const double a_now = out.answer[n];
       double total = 0.0;
       std::size_t visited = 0;
       for (std::size_t i = 0; i < strikes; ++i) {
@@ -143,16 +168,18 @@ class RoomObjective {
           const std::vector<double>& measured = target_.measured_db(i, r);
           const double floor = target_.floor_db(i, r);
           std::vector<double>& p = predicted[i][r].power;
-          for (auto& [cell, own] : power[n][i * kResolutions + r]) {
+          for (Cell& own : power[n][i * kResolutions + r]) {
+            const std::size_t cell = own.cell;
             const double now = now_db[visited++];
-            const double next_power = std::max(p[cell] + (x * x - 1.0) * own, 1e-300);
+            const double next_power = std::max(p[cell] + x * x * own_power(own, a) - own_power(own, a_now), 1e-300);
             const double next = std::max(quick_level_db(next_power), floor);
             const bool was = !(measured[cell] <= floor && now <= floor), is = !(measured[cell] <= floor && next <= floor);
             s += (is ? std::abs(next - measured[cell]) : 0.0) - (was ? std::abs(now - measured[cell]) : 0.0);
             c += double(is) - double(was);
             if (apply) {
               p[cell] = next_power;
-              own *= x * x;
+              own.direct *= x * x;
+              own.reverberant *= x * x;
             }
           }
         }
@@ -162,21 +189,33 @@ class RoomObjective {
         }
         total += c > 0.0 ? s / c : 0.0;
       }
+      if (apply) out.answer[n] = a;
       return total / double(std::max<std::size_t>(strikes, 1));
     };
-    std::vector<double> factor(modes, 1.0);
     for (std::size_t n = 0; n < modes; ++n) {
       level_now(n);
-      double best_value = gap_with(n, 1.0, false), best_x = 1.0;
-      const auto f = [&](double lx) { return gap_with(n, std::exp(lx), false); };
-      double value = 0.0;
-      const double lx = golden_minimum(f, std::log(kMinRead), std::log(kMaxRead), 10, value);
-      if (value < best_value) { best_value = value; best_x = std::exp(lx); }
-      if (may_drop[n] && gap_with(n, 0.0, false) < best_value) best_x = 0.0;
-      factor[n] = best_x;
-      gap_with(n, best_x, true);
+      double best_a = out.answer[n], best_value = gap_with(n, 1.0, best_a, false), best_x = 1.0, value = 0.0;
+      const auto read_x = [&] {
+        const double lx = golden_minimum([&](double v) { return gap_with(n, std::exp(v), best_a, false); },
+                                         std::log(kMinRead), std::log(kMaxRead), 10, value);
+        if (value < best_value) { best_value = value; best_x = std::exp(lx); }
+      };
+      read_x();
+      // The answer, then the amplitude again (a lower answer lowers the level the mode settles at).
+      if (answers && range[n].second > range[n].first) {
+        const double a = golden_minimum([&](double v) { return gap_with(n, best_x, v, false); }, range[n].first,
+                                        range[n].second, 10, value);
+        if (value < best_value) {
+          best_value = value;
+          best_a = a;
+          read_x();
+        }
+      }
+      if (may_drop[n] && gap_with(n, 0.0, best_a, false) < best_value) best_x = 0.0;
+      out.factor[n] = best_x;
+      gap_with(n, best_x, best_a, true);
     }
-    return factor;
+    return out;
   }
 
   // Gap of each strike with the room (k, sigma2).
@@ -338,11 +377,18 @@ RoomFit fit_room(const AuditData& data, const AuditModel& without, const std::ve
   return fit;
 }
 
-std::vector<double> read_mode_amplitudes(const AuditData& data, const AuditModel& without, const Room& room,
-                                         const std::vector<std::size_t>& strikes, const std::vector<bool>& may_drop) {
+void ModeReading::apply(AuditModel& model) const {
+  for (std::size_t n = 0; n < factor.size(); ++n) {
+    model.modes[n].room_gain *= factor[n];
+    model.modes[n].room_answer = answer[n];
+  }
+}
+
+ModeReading read_mode_amplitudes(const AuditData& data, const AuditModel& without, const Room& room,
+                                 const std::vector<std::size_t>& strikes, const std::vector<bool>& may_drop) {
   RoomObjective objective(data, without, strikes, &room);
   const RoomRates rates = room_rates(room, objective.sample_rate());
-  return objective.read_amplitudes(rates.k_per_sample, rates.sigma2, may_drop);
+  return objective.read_amplitudes(rates.k_per_sample, rates.sigma2, may_drop, false);
 }
 
 void read_amplitudes_in_room(const AuditData& data, AuditModel& model, const std::vector<std::size_t>& strikes) {
@@ -358,8 +404,8 @@ void read_amplitudes_in_room(const AuditData& data, AuditModel& model, const std
   double gap = objective->gap(rates.k_per_sample, rates.sigma2);
   for (int pass = 0; pass < kMaxPasses; ++pass) {
     AuditModel next = model;
-    const std::vector<double> read = objective->read_amplitudes(rates.k_per_sample, rates.sigma2, drop_none);
-    for (std::size_t n = 0; n < read.size(); ++n) next.modes[n].room_gain *= read[n];
+    const ModeReading read = objective->read_amplitudes(rates.k_per_sample, rates.sigma2, drop_none, true);
+    read.apply(next);
     objective.emplace(data, next, strikes, &next.room);
     const double next_gap = objective->gap(rates.k_per_sample, rates.sigma2);
     if (next_gap > gap - kMinGainDb) return;

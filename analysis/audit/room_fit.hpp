@@ -32,18 +32,28 @@ struct RoomFit {
 RoomFit fit_room(const AuditData& data, const AuditModel& without, const std::vector<std::size_t>& strikes,
                  bool coarse_only = false, const Room* start = nullptr);
 
+// Per mode of a model: the factor on its dry amplitude (0: the mode is left out) and the room's answer
+// to it (AuditMode::room_answer), read from the spectrograms.
+struct ModeReading {
+  std::vector<double> factor, answer;
+  // room_gain times the factor, room_answer set.
+  void apply(AuditModel& model) const;
+};
+
 // With `room` in the model, each mode's amplitude read again from the strikes' spectrograms, one mode
 // after another (in a room the extraction's amplitude of a mode also holds parts of its reverberation
 // and its neighbours', and some tracks are the room's answer to a stronger mode): the factor on the
 // mode's dry amplitude in [0.1, 3] that lowers the mean gap most, or 0 where leaving it out does better
-// and may_drop[n] allows it.
-std::vector<double> read_mode_amplitudes(const AuditData& data, const AuditModel& without, const Room& room,
-                                         const std::vector<std::size_t>& strikes, const std::vector<bool>& may_drop);
+// and may_drop[n] allows it. The room's answers stay as they are (a room being fitted is a guess).
+ModeReading read_mode_amplitudes(const AuditData& data, const AuditModel& without, const Room& room,
+                                 const std::vector<std::size_t>& strikes, const std::vector<bool>& may_drop);
 
-// The model's own room kept, every mode's room_gain read again (none dropped), in up to two passes
-// while the gap over `strikes` falls: the amplitudes were read in a guessed room, and reading scores
-// each mode on a prediction linearised around the renderings, so a second rendering reads them closer.
-// Nothing happens without a room.
+// The model's own room kept, every mode's room_gain read again (none dropped) with the room's answer to
+// it, in up to two passes while the gap over `strikes` falls: the amplitudes were read in a guessed room,
+// and reading scores each mode on a prediction linearised around the renderings, so a second rendering
+// reads them closer. A room's response at a mode's frequency is one draw of its noise, the same on
+// every strike: a slow mode settles above or below its direct sound by that draw, within what the
+// room's level allows (room_power.hpp: mode_answer_range). Nothing happens without a room.
 void read_amplitudes_in_room(const AuditData& data, AuditModel& model, const std::vector<std::size_t>& strikes);
 
 }  // namespace ms::audit

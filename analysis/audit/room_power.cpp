@@ -192,10 +192,11 @@ RoomFrameSums room_frame_sums(const SpectrogramGrid& g, const RoomRates& rates) 
 }
 
 void mode_frame_powers(const RoomFootprint::ModeTerms& m, const SpectrogramGrid& g, const RoomRates& rates,
-                       const RoomFrameSums& sums, std::size_t frames, double* rendered, double* added) {
+                       const RoomFrameSums& sums, std::size_t frames, double* rendered, double* added,
+                       double* reverberant_part) {
   const double half_window = 0.5 * double(g.window);
   const double k = rates.k_per_sample[m.octave], x = 2.0 * (m.delta - k);
-  const double dry = dry_power_scale(rates, m.octave, m.delta) / m.rendered_scale * m.extra_power;
+  const double dry = mode_dry_factor(m, rates);
   // The rendering's own power (a^2/2 over the window), scaled by dry; the reverberant part
   // sigma^2 (a^2/2) G (e^{-2 k i} - e^{-2 delta i}), G = 1 / (1 - e^{-x}) (i e^{-2 delta i} when x = 0).
   const double own = half_window * 0.5 * m.a2;
@@ -207,8 +208,29 @@ void mode_frame_powers(const RoomFootprint::ModeTerms& m, const SpectrogramGrid&
     const double reverberant = equal ? mode_t * (double(f * g.hop) * m.window_sum + m.ramp_sum)
                                      : G * (room_t * sums.frame_sum[m.octave] - mode_t * m.window_sum);
     rendered[f] = own * mode_t * m.window_sum;
-    added[f] = (dry - 1.0) * rendered[f] + room * reverberant;
+    // An answer below expectation cancels part of the direct sound, never all of it.
+    added[f] = std::max((dry - 1.0) * rendered[f] + m.answer * room * reverberant, (0.01 * dry - 1.0) * rendered[f]);
+    if (reverberant_part) reverberant_part[f] = room * reverberant;
   }
+}
+
+double mode_dry_factor(const RoomFootprint::ModeTerms& m, const RoomRates& rates) {
+  return dry_power_scale(rates, m.octave, m.delta) / m.rendered_scale * m.extra_power;
+}
+
+double mode_reverb_ratio(const RoomFootprint::ModeTerms& m, const RoomRates& rates) {
+  const double k = rates.k_per_sample[m.octave];
+  if (m.delta >= k) return 0.0;
+  return m.own_share * rates.sigma2 / std::expm1(2.0 * (k - m.delta));
+}
+
+std::pair<double, double> mode_answer_range(const RoomFootprint::ModeTerms& m, const RoomRates& rates) {
+  const double q = mode_reverb_ratio(m, rates);
+  if (q <= 0.0) return {0.25, 3.0};
+  const double r = std::sqrt(q);
+  // |1 + h|^2 = 1 + answer q.
+  const double lo = std::max(1.0 - 2.0 * r, 0.1), hi = 1.0 + 2.0 * r;
+  return {(lo * lo - 1.0) / q, (hi * hi - 1.0) / q};
 }
 
 void add_room_power(BarkSpectrogram& spec, const SpectrogramGrid& g, const RoomGrid& rg, const RoomFootprint& fp,

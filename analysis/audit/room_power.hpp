@@ -13,7 +13,9 @@
 //
 // The audit's mode amplitudes are measured ones: in a room, each slow mode's amplitude is multiplied
 // by the room's response at its pole, the same on every strike, so the extraction already carries it:
-// the dry amplitude is the measured one over the square root of that gain's expected power.
+// the dry amplitude is the measured one over the square root of that gain's expected power. The
+// room's actual answer at a mode's frequency is one draw of its noise: a mode's reverberant part may be
+// scaled by an `answer` read from the recordings (room_fit.hpp).
 #pragma once
 #include <array>
 #include <cstddef>
@@ -75,6 +77,7 @@ struct RoomFootprint {
     double ramp_sum = 0.0;      // sum_j w_j^2 j e^{-2 delta j} (for d = k)
     double rendered_scale = 1.0;  // dry_power_scale the rendering applied (1: measured amplitudes)
     double extra_power = 1.0;     // the mode's power relative to its rendering beyond the dry scaling
+    double answer = 1.0;          // its reverberant part over the room's expected one (AuditMode::room_answer)
     std::size_t owner = 0;        // index of the rendered mode it came from
     std::vector<std::pair<std::size_t, double>> leakage;
   };
@@ -98,9 +101,23 @@ struct RoomFrameSums {
 RoomFrameSums room_frame_sums(const SpectrogramGrid& grid, const RoomRates& rates);
 
 // Mode m per frame (before the window's leakage over bands): its rendered power (closed form) and
-// what the room adds to it (the dry scaling and the reverberant part); `frames` values each.
+// what the room adds to it (the dry scaling and the reverberant part times m.answer); `frames` values
+// each. reverberant (optional): the reverberant part alone at answer 1.
 void mode_frame_powers(const RoomFootprint::ModeTerms& m, const SpectrogramGrid& grid, const RoomRates& rates,
-                       const RoomFrameSums& sums, std::size_t frames, double* rendered, double* added);
+                       const RoomFrameSums& sums, std::size_t frames, double* rendered, double* added,
+                       double* reverberant = nullptr);
+
+// The factor on a mode's rendered power that gives its direct part in the room.
+double mode_dry_factor(const RoomFootprint::ModeTerms& m, const RoomRates& rates);
+
+// The power a slow mode settles at in the room over its direct power, in expectation (1 + q); 0 for a
+// mode that decays as fast as the room or faster (its reverberant part is a tail, not a gain).
+double mode_reverb_ratio(const RoomFootprint::ModeTerms& m, const RoomRates& rates);
+
+// The range of m.answer a room of noise allows a slow mode: its response there is 1 + h with h complex
+// Gaussian of power q, so the settled power |1 + h|^2 stays within (1 -+ 2 sqrt q)^2 but rarely.
+// Faster modes: a tail of the room's noise, between a quarter and three times its expected power.
+std::pair<double, double> mode_answer_range(const RoomFootprint::ModeTerms& m, const RoomRates& rates);
 
 // Measured amplitudes to dry ones (in place).
 void make_dry(ModalModel& modes, const RoomRates& rates, double sample_rate_hz);

@@ -322,6 +322,34 @@ TEST(AuditIndependent, ARoomReadInAStrongGuessIsNotLostByItsFit) {
   EXPECT_LT(room.rt60_s[3], 1.5 * c.room.rt60_s[1]);
 }
 
+// A room's response at a mode's frequency is one draw of its noise, the same on every strike, so a slow
+// mode settles above or below its direct sound by that draw, not by the room's expected gain. Read in
+// the fitted room with each mode's amplitude, those answers keep the room of tuning seed 42111 (RT60
+// 0.34-0.17 s, DRR 5.0 dB): with the expected gain alone it explained less than hand damping did.
+TEST(AuditIndependent, TheRoomsAnswerToEachModeIsReadInTheFittedRoom) {
+  const indep::IndependentCase c = indep::generate_independent_case(42111, {"reverberation"}, {0.3});
+  const audit::AuditData data = audit::make_audit_data(c.recordings);
+  const audit::AuditResult r = audit::run_audit(data);
+  ASSERT_FALSE(r.named.empty());
+  EXPECT_EQ(r.named.front().effect, "reverberation") << r.named.front().evidence;
+  ASSERT_TRUE(r.final_model.room.enabled);
+  // Some answers are read away from the expectation, on both sides, and the answers lower the gap.
+  std::size_t above = 0, below = 0;
+  for (const audit::AuditMode& m : r.final_model.modes) {
+    above += m.room_answer > 1.05;
+    below += m.room_answer < 0.95;
+  }
+  std::printf("%zu of %zu modes answered above the room's expectation, %zu below\n", above, r.final_model.modes.size(),
+              below);
+  EXPECT_GT(above, 0u);
+  EXPECT_GT(below, 0u);
+  audit::AuditModel expected = r.final_model;
+  for (audit::AuditMode& m : expected.modes) m.room_answer = 1.0;
+  const double with_answers = audit::mean_gap(r.final_model, data), without = audit::mean_gap(expected, data);
+  std::printf("gap with the answers %.3f dB, with the expected answer %.3f dB\n", with_answers, without);
+  EXPECT_LT(with_answers, without - 0.02);
+}
+
 TEST(AuditIndependent, DISABLED_Tuning) {
   const char* only = std::getenv("INDEPENDENT_TUNING_ONLY");
   const Tally tally = run_cases(env_or("INDEPENDENT_TUNING_FIRST", 40000), env_or("INDEPENDENT_TUNING_COUNT", 44), true, true,
@@ -329,7 +357,7 @@ TEST(AuditIndependent, DISABLED_Tuning) {
   EXPECT_GT(tally.clean, 0);
 }
 
-// Held-out seeds 44440-44659 (never used for tuning: not 1000-1179, 5000-15719, 40000-42999, 44660-46419; 41000-41219,
+// Held-out seeds 44440-44659 (never used for tuning: not 1000-1179, 5000-15719, 40000-42999, 44660-46639; 41000-41219,
 // 43000-43219, 44000-44219 and 44220-44439 held out earlier audits), strengths drawn from (0, 1), in two
 // halves (each 110 cases, 10 of each effect alone, 20 clean, 10 pairs; ~4 min each on two cores): the
 // audit must meet the bars on each half. Disabled because it does not yet: the one run on these seeds
@@ -346,7 +374,9 @@ TEST(AuditIndependent, DISABLED_Tuning) {
 // damping_law 25/30 (each law missed beside a room or a hand); 45980-46199 (the amplitudes read again in the
 // fitted room) clean 40/40, laws 23/24, the halving 173/180, but rooms 24/28, doublets 22/25, bursts 21/24;
 // 46200-46419 (the room fit starting from the room the amplitudes were read in) clean 40/40, doublets
-// 26/26, bursts 23/23, the halving 177/180, but rooms 18/22.
+// 26/26, bursts 23/23, the halving 177/180, but rooms 18/22; 46420-46639 (the room's answer to each mode
+// read in the fitted room) rooms 21/23, clean 40/40, the halving 177/180, but laws 25/28, and on the first
+// half rooms 11/13, laws 10/13 (the second half met every bar).
 // INDEPENDENT_VERBOSE prints every case; INDEPENDENT_HELDOUT_FIRST runs the same protocol from another
 // first seed (the second half 110 after it). Enable when a change meets the bars on fresh seeds, not on these.
 std::size_t held_out_first() { return env_or("INDEPENDENT_HELDOUT_FIRST", 44440); }

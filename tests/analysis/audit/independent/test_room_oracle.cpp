@@ -91,10 +91,11 @@ TruthFit truth_gap(const indep::IndependentCase& c, const audit::AuditData& data
 double audit_modes_in(const audit::AuditData& data, const audit::AuditModel& audited, const ms::Room& room) {
   audit::AuditModel m = audited;
   m.room = {};
-  for (audit::AuditMode& mode : m.modes) mode.room_gain = 1.0;
-  const std::vector<double> read =
-      audit::read_mode_amplitudes(data, m, room, audit::all_strikes(data), std::vector<bool>(m.modes.size(), false));
-  for (std::size_t n = 0; n < m.modes.size(); ++n) m.modes[n].room_gain = read[n];
+  for (audit::AuditMode& mode : m.modes) {
+    mode.room_gain = 1.0;
+    mode.room_answer = 1.0;
+  }
+  audit::read_mode_amplitudes(data, m, room, audit::all_strikes(data), std::vector<bool>(m.modes.size(), false)).apply(m);
   m.room = room;
   return audit::mean_gap(m, data);
 }
