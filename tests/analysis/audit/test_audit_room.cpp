@@ -68,6 +68,58 @@ TEST(AuditRoom, ExpectedPowerIsTheMeanOverRooms) {
   }
 }
 
+// A room's answer to one slow mode is one draw: over 40 drawn rooms (RT60 0.4 s, DRR 0 dB) a 1 kHz mode
+// decaying at 3 /s settles at 1 + answer q times its direct power in its Bark band, with the answer
+// about 1 on average (the expected power) but spread widely, and nearly always within what
+// mode_answer_range allows (|1 + h| within 1 -+ 2 sqrt q: missed with probability e^-4 for one draw).
+TEST(AuditRoom, ASlowModeSettlesAtOneDrawOfTheRoomWithinTheAnswerRange) {
+  ModalModel dry;
+  dry.modes.push_back({.freq_hz = 1000.0, .decay_per_s = 3.0, .amp = 0.3, .phase_rad = 0.0});
+  const std::size_t n = std::size_t(1.5 * kFs);
+  const std::vector<float> y = render_bank(dry, {}, kFs, n);
+  const Grids grids = make_grids(kFs, n);
+  const SpectrogramGrid& g = grids[kDecay];
+  const BarkSpectrogram direct = bark_spectrogram(y, g);
+  Room room = log_linear_room(0.4, 0.4, 0.0, 0);
+  const RoomRates rates = room_rates(room, kFs);
+  const RoomFootprint fp = room_footprint(g, room_grid(g), dry, &rates);
+  ASSERT_EQ(fp.modes.size(), 1u);
+  const double q = mode_reverb_ratio(fp.modes[0], rates);
+  const auto [lo, hi] = mode_answer_range(fp.modes[0], rates);
+  ASSERT_GT(q, 0.0);
+  // The mode's own band and the frames from 0.5 to 1 s (the room has long settled).
+  std::size_t band = 0;
+  for (std::size_t b = 1; b < direct.bands; ++b)
+    if (direct.at(10, b) > direct.at(10, band)) band = b;
+  const std::size_t first = std::size_t(0.5 * kFs / double(g.hop)), last = std::size_t(1.0 * kFs / double(g.hop));
+  constexpr int kRooms = 40;
+  int within = 0;
+  double sum = 0.0, low = 1e300, high = -1e300;
+  for (int k = 0; k < kRooms; ++k) {
+    room.seed = 2000 + std::uint64_t(k);
+    std::vector<float> wet = y;
+    apply_room(wet, kFs, room);
+    const BarkSpectrogram heard = bark_spectrogram(wet, g);
+    double heard_power = 0.0, direct_power = 0.0;
+    for (std::size_t f = first; f < last; ++f) {
+      heard_power += heard.at(f, band);
+      direct_power += direct.at(f, band);
+    }
+    const double answer = (heard_power / direct_power - 1.0) / q;
+    within += answer >= lo && answer <= hi;
+    sum += answer;
+    low = std::min(low, answer);
+    high = std::max(high, answer);
+  }
+  const double mean = sum / kRooms;
+  std::printf("q %.2f, answers %.2f..%.2f (mean %.2f), %d of %d within the range %.2f..%.2f\n", q, low, high, mean,
+              within, kRooms, lo, hi);
+  EXPECT_NEAR(mean, 1.0, 0.5);
+  EXPECT_LT(low, 0.3);
+  EXPECT_GT(high, 1.7);
+  EXPECT_GE(within, kRooms - 2);
+}
+
 // The strikes of one object in a known room; the model holds the object's modes as the extraction
 // measures them there (a slow mode times |H| of the room at its pole, the same on every strike; a fast
 // one by its direct sound) and the strike gains. The fit must find the room the strikes were made in:
