@@ -98,10 +98,10 @@ class RoomObjective {
     std::vector<Spectra> predicted(strikes);
     std::vector<std::vector<std::vector<Cell>>> power(modes, std::vector<std::vector<Cell>>(strikes * kResolutions));
     std::vector<double> sum(strikes, 0.0), cells(strikes, 0.0);
-    ModeReading out{std::vector<double>(modes, 1.0), std::vector<double>(modes, 1.0)};
-    std::vector<std::pair<double, double>> range(modes, {1.0, 1.0});
+    ModeReading out{std::vector<double>(modes, 1.0), {}};
+    for (const AuditMode& m : model_.modes) out.answer.push_back(m.room_answer);
+    std::vector<std::pair<double, double>> range(modes, {1.0, 1.0});  // of the answer (read only with `answers`)
     std::vector<bool> ranged(modes, false);
-    for (std::size_t n = 0; n < modes; ++n) out.answer[n] = model_.modes[n].room_answer;
     for (std::size_t i = 0; i < strikes; ++i) {
       predicted[i] = base_[i];
       for (std::size_t r = 0; r < kResolutions; ++r) {
@@ -113,7 +113,7 @@ class RoomObjective {
         std::vector<std::vector<double>> direct(modes), reverb(modes);
         for (const RoomFootprint::ModeTerms& m : footprints_[i][r].modes) {
           const std::size_t n = owners_[i][m.owner];
-          if (!ranged[n]) {  // from the first strike's rendering (a doublet's pair share a band)
+          if (answers && !ranged[n]) {  // from the first strike's rendering (a doublet's pair share a band)
             range[n] = mode_answer_range(m, rates);
             ranged[n] = true;
           }
@@ -142,8 +142,11 @@ class RoomObjective {
         }
       }
     }
-    // A mode's power in a cell at answer a (as mode_frame_powers: never below 1 % of the direct part).
-    const auto own_power = [](const Cell& c, double a) { return std::max(c.direct + a * c.reverberant, 0.01 * c.direct); };
+    // A mode's power in a cell at answer a (as mode_frame_powers: never below kMinAnsweredShare of the
+    // direct part).
+    const auto own_power = [](const Cell& c, double a) {
+      return std::max(c.direct + a * c.reverberant, kMinAnsweredShare * c.direct);
+    };
     // The level now of each of mode n's cells, in the order gap_with visits them: the same for every
     // factor tried on the mode, so its logarithm is taken once.
     std::vector<double> now_db;

@@ -208,8 +208,8 @@ void mode_frame_powers(const RoomFootprint::ModeTerms& m, const SpectrogramGrid&
     const double reverberant = equal ? mode_t * (double(f * g.hop) * m.window_sum + m.ramp_sum)
                                      : G * (room_t * sums.frame_sum[m.octave] - mode_t * m.window_sum);
     rendered[f] = own * mode_t * m.window_sum;
-    // An answer below expectation cancels part of the direct sound, never all of it.
-    added[f] = std::max((dry - 1.0) * rendered[f] + m.answer * room * reverberant, (0.01 * dry - 1.0) * rendered[f]);
+    added[f] = std::max((dry - 1.0) * rendered[f] + m.answer * room * reverberant,
+                        (kMinAnsweredShare * dry - 1.0) * rendered[f]);
     if (reverberant_part) reverberant_part[f] = room * reverberant;
   }
 }

@@ -100,6 +100,10 @@ struct RoomFrameSums {
 };
 RoomFrameSums room_frame_sums(const SpectrogramGrid& grid, const RoomRates& rates);
 
+// An answer below expectation cancels part of a mode's direct sound, never all of it: at least this
+// share of the direct power stays.
+constexpr double kMinAnsweredShare = 0.01;
+
 // Mode m per frame (before the window's leakage over bands): its rendered power (closed form) and
 // what the room adds to it (the dry scaling and the reverberant part times m.answer); `frames` values
 // each. reverberant (optional): the reverberant part alone at answer 1.
