@@ -14,7 +14,9 @@
 // the model (dropping a mode beside a stronger one when the room's answer fits better without it),
 // refits the law and amplitudes on what is left, fits the room, and reads every mode's amplitude again
 // in the room fitted, with the room's answer to it (one draw of the room's noise at the mode's
-// frequency, the same on every strike: a slow mode settles above or below its direct sound).
+// frequency, the same on every strike: a slow mode settles above or below its direct sound). Where the
+// coarse room is weak, a strong guess is tried as well, and the rooms found are compared with their
+// answers read.
 // Detector: the extension lowers the in-sample gap by enough, and the room itself (its reverberant part
 // and its dry amplitudes) by some of it: dropping tracks and reading amplitudes again alone do not
 // count as a room. A strong room also makes the extracted decays of a mode differ from strike to
@@ -135,11 +137,10 @@ std::size_t drop_modes(const AuditData& data, AuditModel& model, const std::vect
   return dropped;
 }
 
-// The model in a room from a first guess of it: every mode's amplitude read again with that room in
-// the model (dropping the modes beside a stronger one that the room's answer explains better), then the
-// room fitted.
-AuditModel room_from(const AuditData& data, AuditModel roomed, const Room& guess, const std::vector<std::size_t>& strikes,
-                     RoomFit* fit) {
+// The model read in a guessed room: every mode's amplitude read again with that room in the model
+// (dropping the modes beside a stronger one that the room's answer explains better). The room itself
+// is left out (the fit takes the model without one).
+AuditModel read_in_guess(const AuditData& data, AuditModel roomed, const Room& guess, const std::vector<std::size_t>& strikes) {
   // The extraction's amplitude of a mode in a room also holds parts of its reverberation and of its
   // neighbours'; those beside a stronger one may go (they may be the room's answer to it).
   const std::vector<double> stronger = room_made(data, roomed, strikes).stronger_db;
@@ -150,36 +151,64 @@ AuditModel room_from(const AuditData& data, AuditModel roomed, const Room& guess
   std::vector<bool> explained(read.factor.size());
   for (std::size_t n = 0; n < read.factor.size(); ++n) explained[n] = read.factor[n] == 0.0;
   drop_modes(data, roomed, explained, strikes);
-  *fit = fit_room(data, roomed, strikes, false, &guess);
-  roomed.room = fit->room;
   return roomed;
 }
 
+// A candidate room, scored by the gap of the model in it once each mode's amplitude and the room's
+// answer to it are read (read_amplitudes_in_room): a strong room moves each slow mode by its own draw,
+// and scored with its expected power alone it is wrong mode by mode, so that a weak or very short room
+// can score better than the true strong one (held-out seeds 46361, 46727: strong short rooms named hand damping).
+struct RoomCandidate {
+  AuditModel model;  // in the room, the answers read
+  RoomFit fit;       // the fit that gave the room (its grid_cv_gap_db decides room against tail)
+  double answered_gap_db = 0.0;
+};
+
+RoomCandidate answered(const AuditData& data, AuditModel model, const Room& room, const RoomFit& fit,
+                       const std::vector<std::size_t>& strikes) {
+  model.room = room;
+  read_amplitudes_in_room(data, model, strikes);
+  const double gap = mean_gap(model, data, strikes);
+  return {std::move(model), fit, gap};
+}
+
 // The model in a room: the tracks the room made dropped (those the rule above names), then the room
-// from the coarse grid's room as first guess; where that is weak, also from a strong one, the better
-// kept (with the measured amplitudes, which hold each mode's reverberation, the grid can prefer a weak
-// room to the true strong one: the amplitudes must be read again in the strong room before it fits
-// better).
+// fitted from the coarse grid's room as first guess. Where that is weak, also from a strong guess
+// (with the measured amplitudes, which hold each mode's reverberation, the grid can prefer a weak room
+// to the true strong one: the amplitudes must be read again in the strong room before it fits better),
+// and the fit, which scores rooms without their answer to each mode, can then still leave a strong
+// room for a short or weak one; so the strong guess itself, and the room fitted again from it with
+// its answers in place, are candidates too, and the one with the lowest answered gap is kept.
 AuditModel with_room(const AuditData& data, AuditModel roomed, const std::vector<std::size_t>& strikes,
                      double* grid_cv_gap_db) {
   drop_modes(data, roomed, room_made(data, roomed, strikes).made, strikes);
   const Room grid = fit_room(data, roomed, strikes, true).room;
-  RoomFit fit;
-  AuditModel best = room_from(data, roomed, grid, strikes, &fit);
-  if (grid.drr_db > kWeakGuessDrrDb) {
-    Room strong;
-    strong.enabled = true;
-    strong.rt60_s.assign(kRoomOctaveCentresHz.size(), kStrongGuessRt60S);
-    strong.drr_db = kStrongGuessDrrDb;
-    RoomFit strong_fit;
-    AuditModel from_strong = room_from(data, roomed, strong, strikes, &strong_fit);
-    if (strong_fit.gap_db < fit.gap_db) {
-      fit = strong_fit;
-      best = std::move(from_strong);
-    }
+  AuditModel at_grid = read_in_guess(data, roomed, grid, strikes);
+  const RoomFit grid_fit = fit_room(data, at_grid, strikes, false, &grid);
+  if (grid.drr_db <= kWeakGuessDrrDb) {
+    *grid_cv_gap_db = grid_fit.grid_cv_gap_db;
+    at_grid.room = grid_fit.room;
+    return at_grid;
   }
-  *grid_cv_gap_db = fit.grid_cv_gap_db;
-  return best;
+  Room strong;
+  strong.enabled = true;
+  strong.rt60_s.assign(kRoomOctaveCentresHz.size(), kStrongGuessRt60S);
+  strong.drr_db = kStrongGuessDrrDb;
+  const AuditModel at_strong = read_in_guess(data, roomed, strong, strikes);
+  const RoomFit strong_fit = fit_room(data, at_strong, strikes, false, &strong);
+  RoomCandidate in_strong = answered(data, at_strong, strong, strong_fit, strikes);
+  AuditModel answered_in_strong = in_strong.model;
+  answered_in_strong.room = {};
+  const RoomFit refit = fit_room(data, answered_in_strong, strikes, false, &strong);
+  RoomCandidate best = answered(data, std::move(at_grid), grid_fit.room, grid_fit, strikes);
+  std::vector<RoomCandidate> others;
+  others.push_back(answered(data, at_strong, strong_fit.room, strong_fit, strikes));
+  others.push_back(std::move(in_strong));
+  others.push_back(answered(data, std::move(answered_in_strong), refit.room, refit, strikes));
+  for (RoomCandidate& c : others)
+    if (c.answered_gap_db < best.answered_gap_db) best = std::move(c);
+  *grid_cv_gap_db = best.fit.grid_cv_gap_db;
+  return std::move(best.model);
 }
 
 // The model with the additive tail fitted on the strikes (refine = false: its coarse grid only).

@@ -11,13 +11,16 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include "analysis/audit/audit.hpp"
 #include "analysis/audit/audit_model.hpp"
 #include "analysis/audit/room_fit.hpp"
 #include "analysis/audit/room_power.hpp"
+#include "../audit_cases.hpp"
 #include "independent_generator.hpp"
 
 namespace ms::test {
@@ -41,7 +44,9 @@ ms::Room true_room(const indep::IndependentCase& c) {
 
 // Mean gap of the strikes against their true modes, in `room` if given; with `jitter`, each strike's
 // modes as rendered, else without their per-strike amplitude jitter.
-TruthFit truth_gap(const indep::IndependentCase& c, const audit::AuditData& data, const ms::Room* room, bool jitter) {
+// noise: a noise floor per Bark band (audit::AuditModel::noise_band_variance) added to each strike's modes.
+TruthFit truth_gap(const indep::IndependentCase& c, const audit::AuditData& data, const ms::Room* room, bool jitter,
+                   const std::vector<double>& noise = {}) {
   const std::size_t strikes = data.strike_count(), modes = c.strikes[0].modes.size();
   const double fs = data.measured.sample_rate_hz;
   std::vector<double> factor(modes, 1.0);
@@ -50,6 +55,7 @@ TruthFit truth_gap(const indep::IndependentCase& c, const audit::AuditData& data
     for (std::size_t s = 0; s < strikes; ++s) {
       audit::AuditModel m;
       m.gain.assign(strikes, 1.0);
+      m.noise_band_variance = noise;
       for (std::size_t n = 0; n < modes; ++n) {
         const indep::DampedMode& t = c.strikes[s].modes[n];
         m.modes.push_back({.freq_hz = t.freq_hz, .decay_per_s = t.decay_per_s,
@@ -88,7 +94,9 @@ TruthFit truth_gap(const indep::IndependentCase& c, const audit::AuditData& data
 }
 
 // The audit's modes (its final model's, dry) in `room`, each amplitude read again as the room's fit does.
-double audit_modes_in(const audit::AuditData& data, const audit::AuditModel& audited, const ms::Room& room) {
+// answers: then also each mode's amplitude and the room's answer to it read in that room.
+double audit_modes_in(const audit::AuditData& data, const audit::AuditModel& audited, const ms::Room& room,
+                      bool answers = false) {
   audit::AuditModel m = audited;
   m.room = {};
   for (audit::AuditMode& mode : m.modes) {
@@ -97,6 +105,7 @@ double audit_modes_in(const audit::AuditData& data, const audit::AuditModel& aud
   }
   audit::read_mode_amplitudes(data, m, room, audit::all_strikes(data), std::vector<bool>(m.modes.size(), false)).apply(m);
   m.room = room;
+  if (answers) audit::read_amplitudes_in_room(data, m, audit::all_strikes(data));
   return audit::mean_gap(m, data);
 }
 
@@ -136,6 +145,63 @@ TEST(AuditRoomOracle, TheRoomModelWithTheTrueModesExplainsPartOfAStrongRoom) {
   EXPECT_LT(fair_wet.amplitudes_read_db, fair_dry.amplitudes_read_db - 0.5);
   // Not all: even the truth stays well above the clean strikes' gap.
   EXPECT_GT(fair_wet.amplitudes_read_db, cu.amplitudes_read_db + 0.5);
+}
+
+// Some rooms the generator hides no gap can show: behind modes that outlast it, a short room acts as a
+// gain on each mode, which the mode's own amplitude takes up. Held-out seed 46207 (RT60 0.58-0.27 s,
+// DRR 4.3 dB, mode decays of 1.7 s and more), missed by the audit: its true modes, each amplitude read
+// from the recordings, gain 0.14 dB from the true room, a seventh of the audit's 1 dB bar for a room.
+// 46251 (RT60 1.11-0.50 s, DRR 5.5 dB), also missed, is not of that kind: there the true room gains
+// 0.80 dB, and the audit's room 0.84 dB.
+TEST(AuditRoomOracle, AShortRoomBehindSlowModesBarelyMovesEvenTheTrueModesGap) {
+  const struct {
+    std::uint64_t seed;
+    double strength;
+  } cases[] = {{46207, 0.3713333625811765}, {46251, 0.24962029548060219}};
+  double gain_db[2];
+  for (std::size_t i = 0; i < 2; ++i) {
+    const indep::IndependentCase c = indep::generate_independent_case(cases[i].seed, {"reverberation"}, {cases[i].strength});
+    const audit::AuditData data = audit::make_audit_data(c.recordings);
+    const ms::Room truth = true_room(c);
+    const double dry = truth_gap(c, data, nullptr, false).amplitudes_read_db;
+    const double wet = truth_gap(c, data, &truth, false).amplitudes_read_db;
+    gain_db[i] = dry - wet;
+    std::printf("%s\n  true modes without their jitter: %.2f dB dry, %.2f dB in the true room\n", c.summary.c_str(), dry, wet);
+  }
+  EXPECT_LT(gain_db[0], 0.3);
+  EXPECT_GT(gain_db[1], 0.5);
+}
+
+// One case of the independent generator held to its truth (disabled; --gtest_also_run_disabled_tests):
+// ORACLE_SEED=S ORACLE_EFFECTS=a,b ORACLE_STRENGTHS=u,v (all digits, as the held-out runs print them).
+// A noise floor the audit named is added to the true modes too.
+TEST(AuditRoomOracle, DISABLED_Case) {
+  std::vector<std::string> effects;
+  std::vector<double> strengths;
+  env_case("ORACLE", effects, strengths);
+  const char* seed = std::getenv("ORACLE_SEED");
+  ASSERT_NE(seed, nullptr) << "set ORACLE_SEED";
+  const indep::IndependentCase c = indep::generate_independent_case(std::stoull(seed), effects, strengths);
+  ASSERT_TRUE(c.has_room) << "the case hides no room";
+  const audit::AuditData data = audit::make_audit_data(c.recordings);
+  const audit::AuditResult r = audit::run_audit(data);
+  const std::vector<double>& noise = r.final_model.noise_band_variance;
+  const ms::Room truth = true_room(c);
+  const TruthFit fair_dry = truth_gap(c, data, nullptr, false, noise), fair_wet = truth_gap(c, data, &truth, false, noise);
+  std::printf("%s\n  the audit: baseline %.2f dB, floor %.2f dB, after %.2f dB (room %s, DRR %.1f dB), named:",
+              c.summary.c_str(), r.gap_before_db, r.floor_db, r.gap_after_db, r.final_model.room.enabled ? "on" : "off",
+              r.final_model.room.drr_db);
+  for (const auto& n : r.named) std::printf(" %s", n.effect.c_str());
+  std::printf("\n  true modes without their jitter%s: dry %.2f dB, in the true room %.2f dB\n",
+              noise.empty() ? "" : " (with the audit's noise floor)", fair_dry.amplitudes_read_db,
+              fair_wet.amplitudes_read_db);
+  if (r.final_model.room.enabled)
+    std::printf("  true modes in the audit's room: %.2f dB\n",
+                truth_gap(c, data, &r.final_model.room, false, noise).amplitudes_read_db);
+  std::printf("  the audit's modes (%zu) in the true room: %.2f dB; with the room's answers read: %.2f dB\n",
+              r.final_model.modes.size(), audit_modes_in(data, r.final_model, truth),
+              audit_modes_in(data, r.final_model, truth, true));
+  EXPECT_GT(fair_dry.amplitudes_read_db, 0.0);
 }
 
 }  // namespace
