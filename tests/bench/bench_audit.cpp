@@ -28,49 +28,38 @@ ms::audit::HiddenCase ten_strikes(const std::vector<std::string>& effects = {"su
   return ms::audit::generate_hidden_case(4242, effects, std::vector<double>(effects.size(), strength), g);
 }
 
-void BM_AuditTenStrikes(benchmark::State& state) {
-  const auto hc = ten_strikes();
+// The whole audit (extraction included) of the case's strikes, once per iteration.
+void audit_each_iteration(benchmark::State& state, const ms::audit::HiddenCase& hc) {
   for (auto _ : state) {
     const auto data = ms::audit::make_audit_data(hc.recordings);
     const auto r = ms::audit::run_audit(data);
     benchmark::DoNotOptimize(r.gap_after_db);
   }
+}
+
+void BM_AuditTenStrikes(benchmark::State& state) {
+  audit_each_iteration(state, ten_strikes());
 }
 BENCHMARK(BM_AuditTenStrikes)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 // The slowest kind of recording: a room tail (the extraction weighs candidates against it) and an
 // attack burst (the extraction fits each strike twice, the second time from after the burst).
 void BM_AuditTenStrikesReverbAndBurst(benchmark::State& state) {
-  const auto hc = ten_strikes({"reverberation", "residual_transient"});
-  for (auto _ : state) {
-    const auto data = ms::audit::make_audit_data(hc.recordings);
-    const auto r = ms::audit::run_audit(data);
-    benchmark::DoNotOptimize(r.gap_after_db);
-  }
+  audit_each_iteration(state, ten_strikes({"reverberation", "residual_transient"}));
 }
 BENCHMARK(BM_AuditTenStrikesReverbAndBurst)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 // A room (RT60 0.3-1 s over the octaves, DRR +3 dB): the extraction weighs candidates against its
 // coloured tail, and the reverberation extension fits a room in every fold.
 void BM_AuditTenStrikesRoom(benchmark::State& state) {
-  const auto hc = ten_strikes({"reverberation"});
-  for (auto _ : state) {
-    const auto data = ms::audit::make_audit_data(hc.recordings);
-    const auto r = ms::audit::run_audit(data);
-    benchmark::DoNotOptimize(r.gap_after_db);
-  }
+  audit_each_iteration(state, ten_strikes({"reverberation"}));
 }
 BENCHMARK(BM_AuditTenStrikesRoom)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 // A strong room (strength 0.9): where the coarse grid's room is weak, the extension also starts from a
 // strong guess and scores four candidate rooms with each mode's answer read in them.
 void BM_AuditTenStrikesStrongRoom(benchmark::State& state) {
-  const auto hc = ten_strikes({"reverberation"}, 0.9);
-  for (auto _ : state) {
-    const auto data = ms::audit::make_audit_data(hc.recordings);
-    const auto r = ms::audit::run_audit(data);
-    benchmark::DoNotOptimize(r.gap_after_db);
-  }
+  audit_each_iteration(state, ten_strikes({"reverberation"}, 0.9));
 }
 BENCHMARK(BM_AuditTenStrikesStrongRoom)->Unit(benchmark::kMillisecond)->Iterations(3);
 
