@@ -11,16 +11,11 @@
 
 #include "analysis/estimation/iso226_loudness.hpp"
 #include "synthesis/bark.hpp"
+#include "synthesis/fft.hpp"
 
 namespace ms {
 
 namespace {
-
-// FFTW's planner is not thread-safe; images may be made on worker threads.
-std::mutex& planner_mutex() {
-  static std::mutex m;
-  return m;
-}
 
 struct FftwBuffers {
   double* in;
@@ -72,13 +67,15 @@ LoudnessImager::LoudnessImager(double fs, const LoudnessImageOptions& o)
   for (std::size_t b = 0; b < bands; ++b)
     band_centre_hz_[b] = 600.0 * std::sinh((double(b) + 0.5) * band_bark_ / 6.0);
   FftwBuffers buf(window_);
-  const std::lock_guard<std::mutex> lock(planner_mutex());
+  // FFTW's planner is not thread-safe: every plan in the process is made under synthesis/fft's lock
+  // (images are made on worker threads while stimuli are rendered on others).
+  const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
   plan_->plan = fftw_plan_dft_r2c_1d(int(window_), buf.in, buf.out, FFTW_ESTIMATE);
 }
 
 LoudnessImager::~LoudnessImager() {
   if (plan_ && plan_->plan) {
-    const std::lock_guard<std::mutex> lock(planner_mutex());
+    const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
     fftw_destroy_plan(plan_->plan);
   }
 }
