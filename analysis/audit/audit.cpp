@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <string>
 
 #include "analysis/audit/baseline_fit.hpp"
+#include "analysis/audit/parallel_indices.hpp"
 #include "analysis/audit/repeatability_floor.hpp"
 
 namespace ms::audit {
@@ -140,29 +143,40 @@ AuditResult run_audit(const AuditData& data, const std::optional<ModalModel>& gi
         if (!top || p.improvement_db > top->improvement_db) top = &p;
       return top;
     };
-    // Specific effects first; the generic ones only when none of those is named this round.
+    // Why an effect is not tried this round, if it is not: already in the recipe or named (nothing to
+    // say), too few strikes, or (a generic effect) something more specific passed before it.
+    const auto not_tried = [&](const Effect& e) -> std::optional<std::string> {
+      if (std::find(recipe.effects.begin(), recipe.effects.end(), &e) != recipe.effects.end()) return "";
+      for (const NamedEffect& n : result.named)
+        if (n.effect == e.name) return "";
+      if (data.strike_count() < e.min_strikes) return "needs at least " + std::to_string(e.min_strikes) + " strikes";
+      if (const Passed* specific = e.generic ? most_improved() : nullptr)
+        return "not tried this round: " + specific->effect->name + " explains the strikes more specifically";
+      return std::nullopt;
+    };
+    // The specific effects' detectors read only the data and the current model, so they run side by
+    // side (the room's alone takes seconds); a generic effect is tried only when nothing passed before
+    // it, one after another.
+    std::vector<const Effect*> specific;
+    for (const Effect& e : catalog)
+      if (!e.generic && !not_tried(e)) specific.push_back(&e);
+    std::vector<Detection> specific_detection(specific.size());
+    parallel_indices(specific.size(), [&](std::size_t i) { specific_detection[i] = specific[i]->detect(data, current); });
     for (const bool generic : {false, true})
     for (const Effect& e : catalog) {
       if (e.generic != generic) continue;
-      if (std::find(recipe.effects.begin(), recipe.effects.end(), &e) != recipe.effects.end()) continue;
-      bool named_before = false;
-      for (const NamedEffect& n : result.named) named_before |= n.effect == e.name;
-      if (named_before) continue;
+      const std::optional<std::string> skip = not_tried(e);
+      if (skip && skip->empty()) continue;
       Candidate c;
       c.effect = e.name;
-      if (data.strike_count() < e.min_strikes) {
-        c.note = "needs at least " + std::to_string(e.min_strikes) + " strikes";
-        round.push_back(c);
-        continue;
-      }
-      // A generic effect is tried only where nothing has passed before it this round.
-      if (const Passed* specific = generic ? most_improved() : nullptr) {
-        c.note = "not tried this round: " + specific->effect->name + " explains the strikes more specifically";
+      if (skip) {
+        c.note = *skip;
         round.push_back(c);
         continue;
       }
       c.tested = true;
-      const Detection det = e.detect(data, current);
+      const Detection det = generic ? e.detect(data, current)
+                                    : specific_detection[std::size_t(std::ranges::find(specific, &e) - specific.begin())];
       c.statistic = det.statistic;
       c.detector_passes = det.passes;
       c.note = det.evidence;

@@ -31,6 +31,7 @@
 #include "analysis/audit/baseline_fit.hpp"
 #include "analysis/audit/decaying_noise_fit.hpp"
 #include "analysis/audit/effect_catalog.hpp"
+#include "analysis/audit/parallel_indices.hpp"
 #include "analysis/audit/room_fit.hpp"
 #include "analysis/audit/shared_decay_excess.hpp"
 #include "synthesis/bark.hpp"
@@ -167,9 +168,35 @@ struct RoomCandidate {
 RoomCandidate answered(const AuditData& data, AuditModel model, const Room& room, const RoomFit& fit,
                        const std::vector<std::size_t>& strikes) {
   model.room = room;
-  read_amplitudes_in_room(data, model, strikes);
-  const double gap = mean_gap(model, data, strikes);
+  const double gap = *read_amplitudes_in_room(data, model, strikes);  // the room is enabled
   return {std::move(model), fit, gap};
+}
+
+// The strong first guess of a room.
+Room strong_guess() {
+  Room strong;
+  strong.enabled = true;
+  strong.rt60_s.assign(kRoomOctaveCentresHz.size(), kStrongGuessRt60S);
+  strong.drr_db = kStrongGuessDrrDb;
+  return strong;
+}
+
+// The rooms found from the strong guess: fitted from it, the guess itself, and fitted again from it
+// with each mode's answer in place (in that order).
+std::vector<RoomCandidate> from_strong_guess(const AuditData& data, const AuditModel& roomed,
+                                             const std::vector<std::size_t>& strikes) {
+  const Room strong = strong_guess();
+  const AuditModel at_strong = read_in_guess(data, roomed, strong, strikes);
+  const RoomFit strong_fit = fit_room(data, at_strong, strikes, false, &strong);
+  RoomCandidate in_strong = answered(data, at_strong, strong, strong_fit, strikes);
+  AuditModel answered_in_strong = in_strong.model;
+  answered_in_strong.room = {};
+  const RoomFit refit = fit_room(data, answered_in_strong, strikes, false, &strong);
+  std::vector<RoomCandidate> found;
+  found.push_back(answered(data, at_strong, strong_fit.room, strong_fit, strikes));
+  found.push_back(std::move(in_strong));
+  found.push_back(answered(data, std::move(answered_in_strong), refit.room, refit, strikes));
+  return found;
 }
 
 // The model in a room: the tracks the room made dropped (those the rule above names), then the room
@@ -183,29 +210,29 @@ AuditModel with_room(const AuditData& data, AuditModel roomed, const std::vector
                      double* grid_cv_gap_db) {
   drop_modes(data, roomed, room_made(data, roomed, strikes).made, strikes);
   const Room grid = fit_room(data, roomed, strikes, true).room;
-  AuditModel at_grid = read_in_guess(data, roomed, grid, strikes);
-  const RoomFit grid_fit = fit_room(data, at_grid, strikes, false, &grid);
+  const auto from_grid = [&] {
+    AuditModel at_grid = read_in_guess(data, roomed, grid, strikes);
+    const RoomFit fit = fit_room(data, at_grid, strikes, false, &grid);
+    return std::pair{std::move(at_grid), fit};
+  };
   if (grid.drr_db <= kWeakGuessDrrDb) {
-    *grid_cv_gap_db = grid_fit.grid_cv_gap_db;
-    at_grid.room = grid_fit.room;
+    auto [at_grid, fit] = from_grid();
+    *grid_cv_gap_db = fit.grid_cv_gap_db;
+    at_grid.room = fit.room;
     return at_grid;
   }
-  Room strong;
-  strong.enabled = true;
-  strong.rt60_s.assign(kRoomOctaveCentresHz.size(), kStrongGuessRt60S);
-  strong.drr_db = kStrongGuessDrrDb;
-  const AuditModel at_strong = read_in_guess(data, roomed, strong, strikes);
-  const RoomFit strong_fit = fit_room(data, at_strong, strikes, false, &strong);
-  RoomCandidate in_strong = answered(data, at_strong, strong, strong_fit, strikes);
-  AuditModel answered_in_strong = in_strong.model;
-  answered_in_strong.room = {};
-  const RoomFit refit = fit_room(data, answered_in_strong, strikes, false, &strong);
-  RoomCandidate best = answered(data, std::move(at_grid), grid_fit.room, grid_fit, strikes);
-  std::vector<RoomCandidate> others;
-  others.push_back(answered(data, at_strong, strong_fit.room, strong_fit, strikes));
-  others.push_back(std::move(in_strong));
-  others.push_back(answered(data, std::move(answered_in_strong), refit.room, refit, strikes));
-  for (RoomCandidate& c : others)
+  // The two guesses are read and fitted apart, side by side; ties go to the grid's room.
+  std::vector<RoomCandidate> at_grid, at_strong;
+  parallel_indices(2, [&](std::size_t k) {
+    if (k == 1) {
+      at_strong = from_strong_guess(data, roomed, strikes);
+      return;
+    }
+    auto [model, fit] = from_grid();
+    at_grid.push_back(answered(data, std::move(model), fit.room, fit, strikes));
+  });
+  RoomCandidate best = std::move(at_grid.front());
+  for (RoomCandidate& c : at_strong)
     if (c.answered_gap_db < best.answered_gap_db) best = std::move(c);
   *grid_cv_gap_db = best.fit.grid_cv_gap_db;
   return std::move(best.model);

@@ -49,9 +49,10 @@ class GapTarget {
   // first changed_frames[r] frames.
   double strike_gap(std::size_t i, const Spectra& model, const std::array<std::size_t, kResolutions>& changed_frames,
                     const FrameTails& tails) const;
-  // Strike i's clamped measured levels and floor at resolution r.
+  // Strike i's clamped measured levels and floor (dB and power) at resolution r.
   const std::vector<double>& measured_db(std::size_t i, std::size_t r) const { return measured_db_[i][r]; }
   double floor_db(std::size_t i, std::size_t r) const { return floor_db_[i][r]; }
+  double floor_power(std::size_t i, std::size_t r) const { return floor_power_[i][r]; }
 
  private:
   // Adds the gap's sum and count over model cells [from, to) at resolution r.

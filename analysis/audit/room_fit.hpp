@@ -4,6 +4,7 @@
 // added in closed form (room_power.hpp) for each candidate.
 #pragma once
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "analysis/audit/audit_model.hpp"
@@ -53,7 +54,9 @@ ModeReading read_mode_amplitudes(const AuditData& data, const AuditModel& withou
 // and reading scores each mode on a prediction linearised around the renderings, so a second rendering
 // reads them closer. A room's response at a mode's frequency is one draw of its noise, the same on
 // every strike: a slow mode settles above or below its direct sound by that draw, within what the
-// room's level allows (room_power.hpp: mode_answer_range). Nothing happens without a room.
-void read_amplitudes_in_room(const AuditData& data, AuditModel& model, const std::vector<std::size_t>& strikes);
+// room's level allows (room_power.hpp: mode_answer_range). Returns the mean gap over `strikes` of the
+// model read; nothing happens without a room (nullopt).
+std::optional<double> read_amplitudes_in_room(const AuditData& data, AuditModel& model,
+                                              const std::vector<std::size_t>& strikes);
 
 }  // namespace ms::audit
