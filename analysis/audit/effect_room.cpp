@@ -27,6 +27,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <optional>
 
 #include "analysis/audit/baseline_fit.hpp"
 #include "analysis/audit/decaying_noise_fit.hpp"
@@ -222,16 +223,17 @@ AuditModel with_room(const AuditData& data, AuditModel roomed, const std::vector
     return at_grid;
   }
   // The two guesses are read and fitted apart, side by side; ties go to the grid's room.
-  std::vector<RoomCandidate> at_grid, at_strong;
+  std::optional<RoomCandidate> at_grid;
+  std::vector<RoomCandidate> at_strong;
   parallel_indices(2, [&](std::size_t k) {
-    if (k == 1) {
+    if (k == 0) {
+      auto [model, fit] = from_grid();
+      at_grid = answered(data, std::move(model), fit.room, fit, strikes);
+    } else {
       at_strong = from_strong_guess(data, roomed, strikes);
-      return;
     }
-    auto [model, fit] = from_grid();
-    at_grid.push_back(answered(data, std::move(model), fit.room, fit, strikes));
   });
-  RoomCandidate best = std::move(at_grid.front());
+  RoomCandidate best = std::move(*at_grid);
   for (RoomCandidate& c : at_strong)
     if (c.answered_gap_db < best.answered_gap_db) best = std::move(c);
   *grid_cv_gap_db = best.fit.grid_cv_gap_db;

@@ -1,7 +1,9 @@
-// Work items 0..n-1 that stand alone (each strike's extraction, each cross-validation fold) run on the
-// machine's cores. Each item writes only its own slot of the caller's output, so the results, and any
-// sum the caller then takes over them in index order, do not depend on the threads. The first
-// exception an item throws (by index) is rethrown once all have finished.
+// Work items 0..n-1 that stand alone (each strike's extraction, each cross-validation fold, each effect's
+// detector, a room's two guesses) run on the machine's cores; a call inside an item (a room's guesses
+// inside a fold) starts threads of its own, briefly more threads than cores. Each item writes only its own
+// slot of the caller's output, so the results, and any sum the caller then takes over them in index order,
+// do not depend on the threads. The first exception an item throws (by index) is rethrown once all have
+// finished.
 #pragma once
 #include <algorithm>
 #include <atomic>
