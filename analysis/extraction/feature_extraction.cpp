@@ -224,19 +224,28 @@ std::vector<double> residual_of(const FitContext& f, const std::vector<double>& 
   return f.tail.flat() ? std::vector<double>{} : subtract_components(signal, c, signal.size());
 }
 
-bool audible(const FitContext& f, const DampedComponent& c, const std::vector<double>& residual) {
-  const double var = std::max(f.noise_energy, f.noise.variance_at(c.s.imag() * f.fs / kTwoPi));
-  double snr = component_energy(c, 0, f.frames) / var;
-  if (!residual.empty()) snr = std::min(snr, f.tail.weighted_fit_gain(residual, c));
-  return 10.0 * std::log10(snr) >= f.options.min_snr_db;
+// Per component: does it stand min_snr_db above the noise of its band (and, under a tail, does its
+// weighted fit explain that much)?
+std::vector<bool> audible(const FitContext& f, const std::vector<DampedComponent>& c,
+                          const std::vector<double>& residual) {
+  const std::vector<double> gains = residual.empty() ? std::vector<double>{} : f.tail.weighted_fit_gains(residual, c);
+  std::vector<bool> out(c.size());
+  for (std::size_t k = 0; k < c.size(); ++k) {
+    const double var = std::max(f.noise_energy, f.noise.variance_at(c[k].s.imag() * f.fs / kTwoPi));
+    double snr = component_energy(c[k], 0, f.frames) / var;
+    if (!gains.empty()) snr = std::min(snr, gains[k]);
+    out[k] = 10.0 * std::log10(snr) >= f.options.min_snr_db;
+  }
+  return out;
 }
 
 // Candidates under the noise go at once; at most kMaxCandidates (strongest) survive a scan, which
 // bounds the joint fit on pathological input (e.g. dense stationary tones).
 void keep_audible(const FitContext& f, const std::vector<double>& signal, std::vector<DampedComponent>& c) {
   constexpr std::size_t kMaxCandidates = 240;
-  const std::vector<double> residual = residual_of(f, signal, c);
-  std::erase_if(c, [&](const DampedComponent& m) { return !audible(f, m, residual); });
+  const std::vector<bool> keep = audible(f, c, residual_of(f, signal, c));
+  std::size_t k = 0;
+  std::erase_if(c, [&](const DampedComponent&) { return !keep[k++]; });
   if (c.size() > kMaxCandidates) {
     std::sort(c.begin(), c.end(), [&](const auto& a, const auto& b) {
       return component_energy(a, 0, f.frames) > component_energy(b, 0, f.frames);
@@ -287,11 +296,13 @@ PursuitOptions pursuit_options(const FitContext& f) {
 // Hum, contact transients, out-of-range or overshooting poles, and what the noise hides.
 void drop_unfit(const FitContext& f, std::vector<DampedComponent>& c) {
   const ExtractOptions& o = f.options;
-  const std::vector<double> residual = residual_of(f, f.signal, c);
+  const std::vector<bool> heard = audible(f, c, residual_of(f, f.signal, c));
+  std::size_t k = 0;
   std::erase_if(c, [&](const DampedComponent& m) {
     const double d = -m.s.real() * f.fs, freq = m.s.imag() * f.fs / kTwoPi;
+    const bool kept = heard[k++];
     if (d < o.hum_decay_per_s || d > o.max_decay_per_s || freq < o.min_freq_hz || freq >= 0.5 * f.fs) return true;
-    return overshoots(m, f.peak) || !audible(f, m, residual);
+    return overshoots(m, f.peak) || !kept;
   });
 }
 

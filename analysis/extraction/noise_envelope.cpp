@@ -18,6 +18,12 @@ constexpr double kQuantile = 0.2;
 constexpr double kMinRatio = 4.0;
 constexpr double kLowestHz = 100.0, kHighestShare = 0.45;  // bins used (of fs)
 
+// Samples after which |e^{s n}|^2 < 1e-12: the basis adds nothing to the sums beyond them.
+std::size_t basis_span(const DampedComponent& c, std::size_t frames) {
+  const double decay = -c.s.real();
+  return decay > 0.0 ? std::min(frames, std::size_t(std::ceil(13.8 / decay)) + 1) : frames;
+}
+
 }  // namespace
 
 double component_energy(const DampedComponent& c, std::size_t from, std::size_t to) {
@@ -33,27 +39,110 @@ double NoiseEnvelope::weighted_fit_gain(const std::vector<double>& residual, con
   // Normal equations of min sum w (y - (p Re u - q Im u))^2, u = e^{s n}, y = residual + Re(b u).
   double a11 = 0.0, a12 = 0.0, a22 = 0.0, r1 = 0.0, r2 = 0.0;
   constexpr std::size_t kAnchor = 1024;  // fresh powers now and then: the recurrence drifts
-  const double decay = -c.s.real();
-  // Beyond |u|^2 < 1e-12 the basis adds nothing to the sums.
-  const std::size_t span = decay > 0.0 ? std::min(residual.size(), std::size_t(std::ceil(13.8 / decay)) + 1) : residual.size();
+  const std::size_t span = basis_span(c, residual.size());
   const std::complex<double> step = std::exp(c.s);
   for (std::size_t start = 0; start < span; start += kAnchor) {
     std::complex<double> u = std::exp(c.s * double(start));
     const std::size_t end = std::min(span, start + kAnchor);
-    for (std::size_t n = start; n < end; ++n, u *= step) {
+    for (std::size_t n = start; n < end;) {
+      // The weight is constant over a block: one division per block, not per sample.
+      const std::size_t k = block ? n / block : 0;
+      const std::size_t stop = block && k < variance.size() ? std::min(end, (k + 1) * block) : end;
       const double w = 1.0 / at(n);
-      const double y = residual[n] + (c.b * u).real();
-      a11 += w * u.real() * u.real();
-      a12 -= w * u.real() * u.imag();
-      a22 += w * u.imag() * u.imag();
-      r1 += w * y * u.real();
-      r2 -= w * y * u.imag();
+      for (; n < stop; ++n, u *= step) {
+        const double y = residual[n] + (c.b * u).real();
+        a11 += w * u.real() * u.real();
+        a12 -= w * u.real() * u.imag();
+        a22 += w * u.imag() * u.imag();
+        r1 += w * y * u.real();
+        r2 -= w * y * u.imag();
+      }
     }
   }
   const double det = a11 * a22 - a12 * a12;
   if (!(det > 0.0)) return 0.0;
   // r^T A^-1 r: the weighted energy of the fitted component.
   return (a22 * r1 * r1 - 2.0 * a12 * r1 * r2 + a11 * r2 * r2) / det;
+}
+
+namespace {
+
+typedef double V4 __attribute__((vector_size(32)));
+
+struct Lanes {  // one group of kLanes components as two 4-wide vectors (GCC/Clang vector extensions)
+  static constexpr std::size_t kLanes = 8;
+  V4 ur[2]{}, ui[2]{}, sr[2]{}, si[2]{}, br[2]{}, bi[2]{};
+  V4 a11[2]{}, a12[2]{}, a22[2]{}, r1[2]{}, r2[2]{};
+  static double get(const V4* v, std::size_t l) { return v[l / 4][l % 4]; }
+  static void set(V4* v, std::size_t l, double x) { v[l / 4][l % 4] = x; }
+};
+
+}  // namespace
+
+std::vector<double> NoiseEnvelope::weighted_fit_gains(const std::vector<double>& residual,
+                                                      const std::vector<DampedComponent>& c) const {
+  constexpr std::size_t kLanes = Lanes::kLanes, kAnchor = 1024;  // as weighted_fit_gain
+  const std::size_t K = c.size();
+  std::vector<double> gains(K, 0.0);
+  std::vector<std::size_t> span(K), order(K);
+  for (std::size_t k = 0; k < K; ++k) {
+    span[k] = basis_span(c[k], residual.size());
+    order[k] = k;
+  }
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return span[a] > span[b]; });
+  for (std::size_t g = 0; g < K; g += kLanes) {
+    const std::size_t lanes = std::min(kLanes, K - g), len = span[order[g]];
+    Lanes v;
+    for (std::size_t l = 0; l < lanes; ++l) {
+      const DampedComponent& m = c[order[g + l]];
+      const std::complex<double> step = std::exp(m.s);
+      Lanes::set(v.sr, l, step.real());
+      Lanes::set(v.si, l, step.imag());
+      Lanes::set(v.br, l, m.b.real());
+      Lanes::set(v.bi, l, m.b.imag());
+    }
+    for (std::size_t start = 0; start < len; start += kAnchor) {
+      const std::size_t end = std::min(len, start + kAnchor);
+      for (std::size_t n = start; n < end;) {
+        // A lane past its span stays at u = 0 and adds nothing, as the single component's sum stops.
+        for (std::size_t l = 0; l < lanes; ++l) {
+          const std::size_t k = order[g + l];
+          const std::complex<double> u = n == start && n < span[k] ? std::exp(c[k].s * double(start))
+                                         : n < span[k] ? std::complex<double>(Lanes::get(v.ur, l), Lanes::get(v.ui, l))
+                                                       : 0.0;
+          Lanes::set(v.ur, l, u.real());
+          Lanes::set(v.ui, l, u.imag());
+        }
+        // Up to the next change: the weight's block, or a lane's span.
+        const std::size_t b = block ? n / block : 0;
+        std::size_t stop = block && b < variance.size() ? std::min(end, (b + 1) * block) : end;
+        for (std::size_t l = 0; l < lanes; ++l)
+          if (span[order[g + l]] > n) stop = std::min(stop, span[order[g + l]]);
+        const double w = 1.0 / at(n);
+        for (; n < stop; ++n) {
+          const double x = residual[n];
+          for (int h = 0; h < 2; ++h) {
+            const V4 ur = v.ur[h], ui = v.ui[h];
+            const V4 y = x + (v.br[h] * ur - v.bi[h] * ui);
+            v.a11[h] += w * ur * ur;
+            v.a12[h] -= w * ur * ui;
+            v.a22[h] += w * ui * ui;
+            v.r1[h] += w * y * ur;
+            v.r2[h] -= w * y * ui;
+            v.ur[h] = ur * v.sr[h] - ui * v.si[h];
+            v.ui[h] = ur * v.si[h] + ui * v.sr[h];
+          }
+        }
+      }
+    }
+    for (std::size_t l = 0; l < lanes; ++l) {
+      const double a11 = Lanes::get(v.a11, l), a12 = Lanes::get(v.a12, l), a22 = Lanes::get(v.a22, l);
+      const double r1 = Lanes::get(v.r1, l), r2 = Lanes::get(v.r2, l);
+      const double det = a11 * a22 - a12 * a12;
+      gains[order[g + l]] = det > 0.0 ? (a22 * r1 * r1 - 2.0 * a12 * r1 * r2 + a11 * r2 * r2) / det : 0.0;
+    }
+  }
+  return gains;
 }
 
 double NoiseEnvelope::variance_seen(double decay_per_sample, std::size_t frames, int power) const {

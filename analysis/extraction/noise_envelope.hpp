@@ -29,6 +29,10 @@ struct NoiseEnvelope {
   // variances. Unlike its energy over the floor this does not credit a component fitted to loud
   // decaying noise with the energy its decay carries into quiet later samples it does not explain.
   double weighted_fit_gain(const std::vector<double>& residual, const DampedComponent& c) const;
+  // weighted_fit_gain of each component against the same residual, eight components per pass over
+  // the samples (a room recording's fit judges a hundred or more at a time).
+  std::vector<double> weighted_fit_gains(const std::vector<double>& residual,
+                                         const std::vector<DampedComponent>& components) const;
   // The white-noise variance with which an unweighted least-squares fit of a mode decaying by
   // decay_per_sample (amplitude), over n < frames, estimates a parameter whose sensitivity grows as
   // n^power (0: the amplitude; 2: frequency and decay, whose derivatives carry a factor n): the

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "analysis/audit/parallel_indices.hpp"
 #include "analysis/extraction/feature_extraction.hpp"
 #include "analysis/extraction/measured_object.hpp"
 #include "studyapp/cli/commands.hpp"
@@ -80,16 +81,19 @@ void register_extract(CLI::App& app) {
     if (!opt->object_out.empty() && opt->inputs.size() != 1)
       throw InputError(SourceLocation{"--object-out", 0, 0},
                        "needs exactly one recording, not " + std::to_string(opt->inputs.size()));
-    std::vector<std::pair<std::string, ExtractedFeatures>> results;
-    double duration_s = 0.0;
-    for (const std::string& path : opt->inputs) {
+    // The recordings are read and fitted on the machine's cores, each into its own slot; a bad file
+    // stops the command with the first problem in the order given, as one after another would.
+    std::vector<std::pair<std::string, ExtractedFeatures>> results(opt->inputs.size());
+    std::vector<double> durations_s(opt->inputs.size(), 0.0);
+    audit::parallel_indices(opt->inputs.size(), [&](std::size_t i) {
+      const std::string& path = opt->inputs[i];
       const Audio audio = read_audio(path);
       if (opt->channel >= audio.channels)
         throw InputError(SourceLocation{path, 0, 0}, "--channel " + std::to_string(opt->channel) +
                                                          " but the file has " + std::to_string(audio.channels) +
                                                          " channel(s)");
       const std::vector<float> x = mono(audio, opt->channel);
-      duration_s = double(x.size()) / audio.sample_rate_hz;
+      durations_s[i] = double(x.size()) / audio.sample_rate_hz;
       if (auto problem = recording_problem(x, audio.sample_rate_hz))
         throw InputError(SourceLocation{path, 0, 0}, *problem);
       ExtractOptions options;
@@ -98,8 +102,9 @@ void register_extract(CLI::App& app) {
       options.low_band_restart = opt->thorough;
       ExtractedFeatures f = extract_features(x, audio.sample_rate_hz, options);
       if (f.modes.empty()) throw InputError(SourceLocation{path, 0, 0}, "no modes found above the noise floor");
-      results.emplace_back(std::filesystem::path(path).stem().string(), std::move(f));
-    }
+      results[i] = {std::filesystem::path(path).stem().string(), std::move(f)};
+    });
+    const double duration_s = durations_s.empty() ? 0.0 : durations_s.front();  // --object-out: one recording
     std::string object_yaml;
     if (!opt->object_out.empty()) {
       const auto& [name, f] = results.front();

@@ -238,6 +238,33 @@ TEST_F(ExtractCli, OneBadFileOutOfManyWritesNothing) {
   EXPECT_FALSE(fs::exists(csv));
 }
 
+// The recordings are fitted side by side, but the CSV keeps the order they were given in and, of two
+// bad files, the first given is the one named (as one after another would).
+TEST_F(ExtractCli, ManyFilesKeepTheirOrderAndTheFirstBadIsNamed) {
+  const fs::path b = write("b.wav", two_mode_impact(0.5)), a = write("a.wav", two_mode_impact(0.5));
+  const fs::path c = write("c.wav", two_mode_impact(0.5));
+  const fs::path csv = dir_ / "features.csv";
+  const CliRun ok = run("extract " + b.string() + " " + a.string() + " " + c.string() + " -o " + csv.string());
+  ASSERT_EQ(ok.code, 0) << ok.err;
+  std::vector<std::string> sounds;
+  std::istringstream rows(slurp(csv));
+  std::string row;
+  std::getline(rows, row);  // header
+  while (std::getline(rows, row))
+    if (sounds.empty() || sounds.back() != row.substr(0, row.find(','))) sounds.push_back(row.substr(0, row.find(',')));
+  EXPECT_EQ(sounds, (std::vector<std::string>{"b", "a", "c"}));
+  EXPECT_EQ(ok.out.substr(0, 2), "b:") << ok.out;
+
+  const fs::path silent = write("silent.wav", std::vector<float>(44100, 0.0f));
+  const CliRun bad = run("extract " + a.string() + " " + silent.string() + " " + (dir_ / "nowhere.wav").string() +
+                         " -o " + (dir_ / "other.csv").string());
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("silent.wav: silent"), std::string::npos) << bad.err;
+  EXPECT_EQ(bad.err.find("nowhere.wav"), std::string::npos) << bad.err;
+  EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+  EXPECT_FALSE(fs::exists(dir_ / "other.csv"));
+}
+
 }  // namespace
 
 namespace {

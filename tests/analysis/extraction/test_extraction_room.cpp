@@ -74,6 +74,28 @@ TEST(NoiseEnvelope, WeightedFitGainCreditsWhatAComponentExplains) {
   EXPECT_GT(10.0 * std::log10(component_energy(fake, 0, n) / 1e-12), 60.0);   // what the floor alone would say
 }
 
+// The batched gains are the single component's, whatever their group: eleven components (a group of
+// eight and one of three) from a fast one that ends inside the first block to one that never decays,
+// against a tail whose blocks end mid-recording.
+TEST(NoiseEnvelope, WeightedFitGainsAreEachComponentsOwn) {
+  const std::size_t n = 30000;
+  NoiseEnvelope tail{64, {}, 1e-8};
+  for (std::size_t k = 0; k < 200; ++k) tail.variance.push_back(1e-4 * std::exp(-0.02 * double(k)) + 1e-8);
+  const std::vector<double> residual = decaying_noise(n, 1e-2, 0.3, 1e-4, 5);
+  std::vector<DampedComponent> comps;
+  for (double d : {0.0, 3.0, 20.0, 90.0, 400.0, 2500.0, 9000.0, 1.0, 60.0, 700.0, 15.0})
+    comps.push_back({std::complex<double>(-d, 2.0 * std::numbers::pi * (300.0 + 37.0 * d)) / kFs,
+                     {1e-3, -2e-4 * std::sqrt(d)}});
+  const std::vector<double> gains = tail.weighted_fit_gains(residual, comps);
+  ASSERT_EQ(gains.size(), comps.size());
+  for (std::size_t k = 0; k < comps.size(); ++k) {
+    const double one = tail.weighted_fit_gain(residual, comps[k]);
+    EXPECT_GT(one, 0.0) << k;
+    EXPECT_NEAR(gains[k] / one, 1.0, 1e-9) << k;
+  }
+  EXPECT_TRUE(tail.weighted_fit_gains(residual, {}).empty());
+}
+
 // variance_seen against a sample-by-sample sum: the envelope averaged with weights n^p e^{-2 d n}.
 TEST(NoiseEnvelope, VarianceSeenWeighsTheTailByWhereTheModeIsMeasured) {
   const double loud = 1e-4, floor = 1e-8;
