@@ -92,9 +92,13 @@ std::size_t add_decaying_noise_power(BarkSpectrogram& spec, const SpectrogramGri
     if (t0 >= held) {
       fallen = fallen < 0.0 ? std::pow(r, double(t0 - held)) : fallen * per_hop;
       level = var0 * fallen * frame0;
-    } else {  // the frame meets the hold: its samples one by one
-      for (std::size_t i = 0; i < g.window; ++i)
-        level += w2[i] * var0 * (t0 + i < held ? 1.0 : std::pow(r, double(t0 + i - held)));
+    } else {  // the frame meets the hold: its samples one by one, r^j from the hold's end on
+      double after = 1.0;
+      for (std::size_t i = 0; i < g.window; ++i) {
+        const bool holding = t0 + i < held;
+        level += w2[i] * var0 * (holding ? 1.0 : after);
+        if (!holding) after *= r;
+      }
     }
     if (!(level > 1e-30 * var0)) return f;
     for (std::size_t b = 0; b < spec.bands; ++b)
