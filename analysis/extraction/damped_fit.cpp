@@ -159,7 +159,7 @@ double energy(const std::vector<double>& x) {
 
 // Solves G x = r for a Gram matrix G (symmetric, positive semi-definite) by LDLT in G's own storage,
 // which it overwrites: at the hundreds of columns a room recording's fit has, G is megabytes, and a
-// fresh copy per solve cost more in page faults than the factorisation. (A blocked Cholesky is ~15x
+// fresh copy per solve cost more in page faults than the factorisation. (A blocked Cholesky is ~3x
 // faster here but rounds differently; the fit's accept/reject steps and audibility bars are tuned on
 // these solutions, so a change of solver is a change of results, to be re-validated as one.)
 Eigen::VectorXd ldlt_solve_in_place(Eigen::MatrixXd& G, const Eigen::VectorXd& r) {
