@@ -7,7 +7,8 @@
 // the hit point times the jitter), read within +-13 dB as the audit reads its residuals, with no
 // extraction, no room and no other effect. So its figures are a ceiling for the audit on these cases.
 // The predictor family is re-implemented here in its essentials (four splits into halves as the
-// audit's; not its tilt and contact removal), so the figures say what the patterns allow.
+// audit's; least squares where the audit places a strike on its path by median and Huber loss; not its
+// tilt and contact removal), so the figures say what the patterns allow.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
