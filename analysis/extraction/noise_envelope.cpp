@@ -24,6 +24,12 @@ std::size_t basis_span(const DampedComponent& c, std::size_t frames) {
   return decay > 0.0 ? std::min(frames, std::size_t(std::ceil(13.8 / decay)) + 1) : frames;
 }
 
+// r^T A^-1 r of the 2x2 normal equations: the weighted energy of the fitted component (0 when singular).
+double fitted_energy(double a11, double a12, double a22, double r1, double r2) {
+  const double det = a11 * a22 - a12 * a12;
+  return det > 0.0 ? (a22 * r1 * r1 - 2.0 * a12 * r1 * r2 + a11 * r2 * r2) / det : 0.0;
+}
+
 }  // namespace
 
 double component_energy(const DampedComponent& c, std::size_t from, std::size_t to) {
@@ -34,6 +40,16 @@ double component_energy(const DampedComponent& c, std::size_t from, std::size_t 
   const std::complex<double> t_osc = weighted_geometric_sum(0, 2.0 * c.s, n);
   return 0.5 * (std::norm(b) * t_abs.real() + (b * b * t_osc).real());
 }
+
+namespace {
+
+// The end of the run of samples from n (before `end`) over which the envelope's weight stays the same.
+std::size_t same_weight_until(const NoiseEnvelope& e, std::size_t n, std::size_t end) {
+  const std::size_t k = e.block ? n / e.block : 0;
+  return e.block && k < e.variance.size() ? std::min(end, (k + 1) * e.block) : end;
+}
+
+}  // namespace
 
 double NoiseEnvelope::weighted_fit_gain(const std::vector<double>& residual, const DampedComponent& c) const {
   // Normal equations of min sum w (y - (p Re u - q Im u))^2, u = e^{s n}, y = residual + Re(b u).
@@ -46,8 +62,7 @@ double NoiseEnvelope::weighted_fit_gain(const std::vector<double>& residual, con
     const std::size_t end = std::min(span, start + kAnchor);
     for (std::size_t n = start; n < end;) {
       // The weight is constant over a block: one division per block, not per sample.
-      const std::size_t k = block ? n / block : 0;
-      const std::size_t stop = block && k < variance.size() ? std::min(end, (k + 1) * block) : end;
+      const std::size_t stop = same_weight_until(*this, n, end);
       const double w = 1.0 / at(n);
       for (; n < stop; ++n, u *= step) {
         const double y = residual[n] + (c.b * u).real();
@@ -59,10 +74,7 @@ double NoiseEnvelope::weighted_fit_gain(const std::vector<double>& residual, con
       }
     }
   }
-  const double det = a11 * a22 - a12 * a12;
-  if (!(det > 0.0)) return 0.0;
-  // r^T A^-1 r: the weighted energy of the fitted component.
-  return (a22 * r1 * r1 - 2.0 * a12 * r1 * r2 + a11 * r2 * r2) / det;
+  return fitted_energy(a11, a12, a22, r1, r2);
 }
 
 namespace {
@@ -107,15 +119,14 @@ std::vector<double> NoiseEnvelope::weighted_fit_gains(const std::vector<double>&
         // A lane past its span stays at u = 0 and adds nothing, as the single component's sum stops.
         for (std::size_t l = 0; l < lanes; ++l) {
           const std::size_t k = order[g + l];
-          const std::complex<double> u = n == start && n < span[k] ? std::exp(c[k].s * double(start))
-                                         : n < span[k] ? std::complex<double>(Lanes::get(v.ur, l), Lanes::get(v.ui, l))
-                                                       : 0.0;
+          const std::complex<double> u = n >= span[k]  ? 0.0
+                                         : n == start ? std::exp(c[k].s * double(start))
+                                                      : std::complex<double>(Lanes::get(v.ur, l), Lanes::get(v.ui, l));
           Lanes::set(v.ur, l, u.real());
           Lanes::set(v.ui, l, u.imag());
         }
         // Up to the next change: the weight's block, or a lane's span.
-        const std::size_t b = block ? n / block : 0;
-        std::size_t stop = block && b < variance.size() ? std::min(end, (b + 1) * block) : end;
+        std::size_t stop = same_weight_until(*this, n, end);
         for (std::size_t l = 0; l < lanes; ++l)
           if (span[order[g + l]] > n) stop = std::min(stop, span[order[g + l]]);
         const double w = 1.0 / at(n);
@@ -136,10 +147,8 @@ std::vector<double> NoiseEnvelope::weighted_fit_gains(const std::vector<double>&
       }
     }
     for (std::size_t l = 0; l < lanes; ++l) {
-      const double a11 = Lanes::get(v.a11, l), a12 = Lanes::get(v.a12, l), a22 = Lanes::get(v.a22, l);
-      const double r1 = Lanes::get(v.r1, l), r2 = Lanes::get(v.r2, l);
-      const double det = a11 * a22 - a12 * a12;
-      gains[order[g + l]] = det > 0.0 ? (a22 * r1 * r1 - 2.0 * a12 * r1 * r2 + a11 * r2 * r2) / det : 0.0;
+      gains[order[g + l]] = fitted_energy(Lanes::get(v.a11, l), Lanes::get(v.a12, l), Lanes::get(v.a22, l),
+                                          Lanes::get(v.r1, l), Lanes::get(v.r2, l));
     }
   }
   return gains;

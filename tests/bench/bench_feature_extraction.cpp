@@ -115,14 +115,17 @@ BENCHMARK(BM_FullBandEsprit50ms)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
-// The 40 true modes of the impact as components over its 2 s.
-std::vector<ms::DampedComponent> impact_components() {
+// A model's modes as the extraction's components (amplitude at n = 0, phase so that Re gives a sine).
+std::vector<ms::DampedComponent> components_of(const ms::ModalModel& model) {
   std::vector<ms::DampedComponent> c;
-  for (const ms::Mode& m : ms::testing::random_impact(7, 40, 40).modes)
+  for (const ms::Mode& m : model.modes)
     c.push_back({std::complex<double>(-m.decay_per_s, 2.0 * std::numbers::pi * m.freq_hz) / kFs,
                  std::complex<double>(0.0, -m.amp)});
   return c;
 }
+
+// The 40 true modes of the impact as components over its 2 s.
+std::vector<ms::DampedComponent> impact_components() { return components_of(ms::testing::random_impact(7, 40, 40)); }
 
 // Cramer-Rao bounds from the closed-form Gram (no pass over the samples) and a Cholesky inverse.
 void BM_ModePrecision(benchmark::State& state) {
@@ -169,9 +172,7 @@ const RoomFit& room_fit() {
     std::vector<float> y = ms::testing::render_noisy(m, kFs, 2.0, 200.0, 11);
     ms::add_reverb_and_transient(y, kFs, {0.5, -20.0, 11, true}, {});
     r.signal.assign(y.begin(), y.end());
-    for (const ms::Mode& mode : m.modes)
-      r.comps.push_back({std::complex<double>(-mode.decay_per_s, 2.0 * std::numbers::pi * mode.freq_hz) / kFs,
-                         std::complex<double>(0.0, -mode.amp)});
+    r.comps = components_of(m);
     r.tail = ms::estimate_noise_envelope(r.signal, kFs, 1e-10);
     return r;
   }();
