@@ -12,6 +12,7 @@
 #include "analysis/audit/baseline_fit.hpp"
 #include "analysis/audit/contact_spectrum.hpp"
 #include "analysis/audit/effect_catalog.hpp"
+#include "analysis/audit/parallel_indices.hpp"
 
 namespace ms::audit {
 
@@ -106,17 +107,24 @@ void extend(const AuditData& data, AuditModel& model, const std::vector<std::siz
   struct Best {
     double ss = 1e300, tau = 0.0, p = 0.0;
   };
+  // The grid's points are fitted side by side (each on its own copy of the start), then taken in the
+  // grid's order, so the point kept does not depend on the threads.
   const auto search = [&](PulseShape shape, Best& best, std::size_t from, std::size_t to, std::size_t step) {
+    std::vector<Best> points;
     for (std::size_t i = from; i <= to && i < taus.size(); i += step)
       for (int k = 1; k <= 10; ++k) {
-        AuditModel trial = start;
-        trial.contact_shape = shape;
-        trial.contact_s.assign(data.strike_count(), 0.0);
-        trial.contact_gain_ref = gref;
-        const double ss = fit_at(data, trial, train, taus[i], 0.1 * k);
-        if (ss < best.ss - 1e-12) best = {ss, taus[i], 0.1 * k};
+        points.push_back({.tau = taus[i], .p = 0.1 * k});
         if (taus[i] == 0.0) break;  // p is irrelevant for an impulse
       }
+    parallel_indices(points.size(), [&](std::size_t j) {
+      AuditModel trial = start;
+      trial.contact_shape = shape;
+      trial.contact_s.assign(data.strike_count(), 0.0);
+      trial.contact_gain_ref = gref;
+      points[j].ss = fit_at(data, trial, train, points[j].tau, points[j].p);
+    });
+    for (const Best& point : points)
+      if (point.ss < best.ss - 1e-12) best = point;
   };
   // Each shape's law by the mode amplitudes; between the shapes, the training strikes' gap decides
   // (amplitudes of modes near a pulse's spectral zeros are what the extraction reads worst).

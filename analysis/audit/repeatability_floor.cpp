@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 
+#include "analysis/audit/parallel_indices.hpp"
+
 namespace ms::audit {
 
 namespace {
@@ -30,14 +32,18 @@ RepeatabilityFloor repeatability_floor(const AuditData& data, const std::vector<
   RepeatabilityFloor out;
   const std::size_t n = data.strike_count();
   if (n < 2 || fold_models.size() != n) return out;
-  for (std::size_t k = 0; k < n; ++k) {
+  // Each held-out strike's floor stands alone: they are read side by side, each into its own slot.
+  out.strike_gap_db.assign(n, 0.0);
+  out.strike_best_db.assign(n, 0.0);
+  out.strike_floor_db.assign(n, 0.0);
+  parallel_indices(n, [&](std::size_t k) {
     std::vector<std::size_t> train;
     for (std::size_t s = 0; s < n; ++s)
       if (s != k) train.push_back(s);
     const AuditModel& model = fold_models[k];
     Spectra best = predict_spectra(model, data, k);
     const double plain_gap_db = gap_map(data.measured.strikes[k].spectra, best).gap_db;
-    out.strike_gap_db.push_back(plain_gap_db);
+    out.strike_gap_db[k] = plain_gap_db;
     // dB residual of the training strikes per cell, each clamped below its own measured peak: its mean,
     // shrunk towards 0 by the positive-part James-Stein factor 1 - (standard error / mean)^2, so that
     // residuals the strikes do not agree on (each strike's own scatter) stay out of the best model.
@@ -72,9 +78,9 @@ RepeatabilityFloor repeatability_floor(const AuditData& data, const std::vector<
     }
     // Residuals that follow a per-strike value (a contact's notches move with the strike) do not carry
     // over to strike k; then the fold's own model is the better model of the others.
-    out.strike_best_db.push_back(gap_map(held_out, best).gap_db);
-    out.strike_floor_db.push_back(std::min(out.strike_best_db.back(), plain_gap_db));
-  }
+    out.strike_best_db[k] = gap_map(held_out, best).gap_db;
+    out.strike_floor_db[k] = std::min(out.strike_best_db[k], plain_gap_db);
+  });
   double sum = 0.0;
   for (double g : out.strike_floor_db) sum += g;
   out.floor_db = sum / double(n);
