@@ -203,8 +203,8 @@ AuditResult run_audit(const AuditData& data, const std::optional<ModalModel>& gi
     result.rounds.push_back(round);
     if (!best) break;
     recipe.effects.push_back(best);
-    AuditModel next;
-    const double next_gap = in_sample_gap(data, recipe, &next);
+    AuditModel next = fit_last_effect(data, recipe, current, chosen->detection.extended);
+    const double next_gap = mean_gap(next, data);
     result.named.push_back({best->name, gap, next_gap, cv - chosen->cv_gap_db, best->parameters(data, next),
                             chosen->detection.evidence});
     gap = next_gap;

@@ -81,6 +81,16 @@ double cross_validated_gap(const AuditData& data, const Recipe& recipe, std::vec
   return sum / double(n);
 }
 
+AuditModel fit_last_effect(const AuditData& data, const Recipe& recipe, const AuditModel& before,
+                           const std::optional<AuditModel>& extended) {
+  const std::vector<std::size_t> all = all_strikes(data);
+  AuditModel model = extended ? *extended : before;
+  if (!extended) recipe.effects.back()->extend(data, model, all);
+  for (std::size_t s : all) adapt_strike(data, recipe, model, s);
+  name_effects(recipe, model);
+  return model;
+}
+
 double in_sample_gap(const AuditData& data, const Recipe& recipe, AuditModel* fitted) {
   AuditModel model = fit_recipe(data, recipe, all_strikes(data));
   const double gap = mean_gap(model, data);

@@ -43,4 +43,11 @@ double cross_validated_gap(const AuditData& data, const Recipe& recipe, std::vec
 // In-sample: fitted on every strike, mean gap over every strike.
 double in_sample_gap(const AuditData& data, const Recipe& recipe, AuditModel* fitted = nullptr);
 
+// fit_recipe on every strike, from the model of every effect but the last (`before`, as fit_recipe made
+// it) and, where the last effect's detector built it, `before` with that effect extended on every strike:
+// fitting is deterministic, so this is the same model without fitting the baseline and the effects
+// before it again.
+AuditModel fit_last_effect(const AuditData& data, const Recipe& recipe, const AuditModel& before,
+                           const std::optional<AuditModel>& extended);
+
 }  // namespace ms::audit

@@ -40,7 +40,8 @@ Detection detect_by_gap_improvement(const AuditData& data, const AuditModel& cur
   d.statistic = before - after;
   d.passes = d.statistic >= min_improvement_db;
   d.evidence = evidence(with, before, after);
-  if (extended) *extended = std::move(with);
+  if (extended) *extended = with;
+  d.extended = std::move(with);
   return d;
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -20,6 +21,9 @@ struct Detection {
   // Effects whose evidence this one also explains: where this one passes in the same round and
   // improves the held-out gap, it is named before them even if they improve it more.
   std::vector<std::string> precedes;
+  // The current model with this effect extended on every strike, where the detector built it: naming
+  // the effect then starts from it (fit_last_effect).
+  std::optional<AuditModel> extended;
 };
 
 using Parameters = std::vector<std::pair<std::string, double>>;

@@ -250,6 +250,7 @@ Detection detect(const AuditData& data, const AuditModel& current) {
                 to_string(with.contact_shape).c_str(), after, before, 100.0 * order, in_main_lobe, bright.split_hz,
                 bright.db_per_db);
   d.evidence = buf;
+  d.extended = std::move(with);
   return d;
 }
 

@@ -214,6 +214,7 @@ Detection detect(const AuditData& data, const AuditModel& current) {
                 1e3 * kAttackS, d.statistic, 1e3 * noise_s, with.transient.low_hz, with.transient.high_hz,
                 attack_before, attack_after, better, before.size(), attacks.filled_gain_db, attacks.filled_cells);
   d.evidence = buf;
+  d.extended = std::move(with);
   return d;
 }
 

@@ -287,6 +287,41 @@ TEST(AuditCrossValidation, FoldsResumedFromTrainedModelsEqualFoldsFittedAfresh) 
   }
 }
 
+// Likewise in sample: the model of a recipe fitted from the model of the recipe before it, with the
+// last effect's extension as its detector built it or extended again, equals the recipe fitted afresh.
+TEST(AuditCrossValidation, TheNamedModelFromTheOneBeforeEqualsTheRecipeFittedAfresh) {
+  const HiddenCase hc = generate_hidden_case(7, {"reverberation", "residual_transient"}, {0.8, 0.8});
+  const AuditData data = make_audit_data(hc.recordings);
+  const std::vector<Effect> catalog = effect_catalog();
+  const Effect* room = find_effect(catalog, "reverberation");
+  const Effect* burst = find_effect(catalog, "residual_transient");
+  const std::vector<std::size_t> all = all_strikes(data);
+  const Recipe first{std::nullopt, {room}}, both{std::nullopt, {room, burst}};
+  const AuditModel before = fit_recipe(data, first, all);
+  const AuditModel fresh = fit_recipe(data, both, all);
+  const Detection detection = burst->detect(data, before);
+  ASSERT_TRUE(detection.extended.has_value());
+  const auto expect_same = [&](const AuditModel& m, const char* how) {
+    EXPECT_EQ(m.effects, fresh.effects) << how;
+    EXPECT_EQ(m.gain, fresh.gain) << how;
+    ASSERT_EQ(m.modes.size(), fresh.modes.size()) << how;
+    for (std::size_t n = 0; n < m.modes.size(); ++n) {
+      EXPECT_EQ(m.modes[n].freq_hz, fresh.modes[n].freq_hz) << how << " " << n;
+      EXPECT_EQ(m.modes[n].amp, fresh.modes[n].amp) << how << " " << n;
+      EXPECT_EQ(m.modes[n].decay_per_s, fresh.modes[n].decay_per_s) << how << " " << n;
+    }
+    EXPECT_EQ(m.room.rt60_s, fresh.room.rt60_s) << how;
+    EXPECT_EQ(m.room.drr_db, fresh.room.drr_db) << how;
+    EXPECT_EQ(m.transient.level_db, fresh.transient.level_db) << how;
+    EXPECT_EQ(m.transient.duration_ms, fresh.transient.duration_ms) << how;
+    EXPECT_EQ(mean_gap(m, data), mean_gap(fresh, data)) << how;
+  };
+  expect_same(fit_last_effect(data, both, before, detection.extended), "from the detector's extension");
+  expect_same(fit_last_effect(data, both, before, std::nullopt), "extended again");
+  EXPECT_TRUE(fresh.room.enabled || fresh.reverb.enabled);
+  EXPECT_TRUE(fresh.transient.enabled);
+}
+
 TEST(AuditTransient, StrongBurstIsNamedFittedAndExplained) {
   const HiddenCase hc = generate_hidden_case(1007, {"residual_transient"}, {0.9});
   const AuditData data = make_audit_data(hc.recordings);
