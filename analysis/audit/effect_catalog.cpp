@@ -31,8 +31,7 @@ double median(std::vector<double> v) {
 
 Detection detect_by_gap_improvement(const AuditData& data, const AuditModel& current,
                                     void (*extend)(const AuditData&, AuditModel&, const std::vector<std::size_t>&),
-                                    double min_improvement_db, const GapEvidence& evidence,
-                                    AuditModel* extended) {
+                                    double min_improvement_db, const GapEvidence& evidence) {
   AuditModel with = current;
   extend(data, with, all_strikes(data));
   const double before = mean_gap(current, data), after = mean_gap(with, data);
@@ -40,7 +39,6 @@ Detection detect_by_gap_improvement(const AuditData& data, const AuditModel& cur
   d.statistic = before - after;
   d.passes = d.statistic >= min_improvement_db;
   d.evidence = evidence(with, before, after);
-  if (extended) *extended = with;
   d.extended = std::move(with);
   return d;
 }

@@ -63,12 +63,11 @@ double median(std::vector<double> v);
 
 // A detector whose statistic is the in-sample gap improvement of the effect's extension fitted on all
 // strikes: passes at >= min_improvement_db; `evidence(with, before_db, after_db)` writes the sentence.
-// `extended`, when given, receives the extended model (for a detector that asks more of it).
+// The extended model is the detection's `extended` (for a detector that asks more of it).
 using GapEvidence = std::function<std::string(const AuditModel& with, double before_db, double after_db)>;
 Detection detect_by_gap_improvement(const AuditData& data, const AuditModel& current,
                                     void (*extend)(const AuditData&, AuditModel&, const std::vector<std::size_t>&),
-                                    double min_improvement_db, const GapEvidence& evidence,
-                                    AuditModel* extended = nullptr);
+                                    double min_improvement_db, const GapEvidence& evidence);
 
 // White-noise standard deviation with the noise_floor extension's total power (full scale 1).
 double noise_white_sigma(const AuditData& data, const AuditModel& model);

@@ -305,8 +305,8 @@ Detection detect(const AuditData& data, const AuditModel& current) {
                     with.reverb.rt60_s, with.reverb.level_db, before, after);
     return std::string(buf);
   };
-  AuditModel with;
-  Detection d = detect_by_gap_improvement(data, current, extend, kMinGapImprovementDb, evidence, &with);
+  Detection d = detect_by_gap_improvement(data, current, extend, kMinGapImprovementDb, evidence);
+  const AuditModel& with = *d.extended;
   // The room itself must explain something: with it silenced (its level 200 dB down) the tracks it
   // dropped and the amplitudes it read again stay, and can lower a gap where the tracks were off for
   // another reason (generated rooms: 0.10-0.72 dB).
