@@ -30,6 +30,12 @@ double fitted_energy(double a11, double a12, double a22, double r1, double r2) {
   return det > 0.0 ? (a22 * r1 * r1 - 2.0 * a12 * r1 * r2 + a11 * r2 * r2) / det : 0.0;
 }
 
+// The end of the run of samples from n (before `end`) over which the envelope's weight stays the same.
+std::size_t same_weight_until(const NoiseEnvelope& e, std::size_t n, std::size_t end) {
+  const std::size_t k = e.block ? n / e.block : 0;
+  return e.block && k < e.variance.size() ? std::min(end, (k + 1) * e.block) : end;
+}
+
 }  // namespace
 
 double component_energy(const DampedComponent& c, std::size_t from, std::size_t to) {
@@ -40,16 +46,6 @@ double component_energy(const DampedComponent& c, std::size_t from, std::size_t 
   const std::complex<double> t_osc = weighted_geometric_sum(0, 2.0 * c.s, n);
   return 0.5 * (std::norm(b) * t_abs.real() + (b * b * t_osc).real());
 }
-
-namespace {
-
-// The end of the run of samples from n (before `end`) over which the envelope's weight stays the same.
-std::size_t same_weight_until(const NoiseEnvelope& e, std::size_t n, std::size_t end) {
-  const std::size_t k = e.block ? n / e.block : 0;
-  return e.block && k < e.variance.size() ? std::min(end, (k + 1) * e.block) : end;
-}
-
-}  // namespace
 
 double NoiseEnvelope::weighted_fit_gain(const std::vector<double>& residual, const DampedComponent& c) const {
   // Normal equations of min sum w (y - (p Re u - q Im u))^2, u = e^{s n}, y = residual + Re(b u).
