@@ -207,14 +207,18 @@ double strike_variation(const MeasuredStrikes& measured) {
   return measured.strikes.size() > 1 ? sum / double(measured.strikes.size() - 1) : 0.0;
 }
 
-void fit_gain(AuditModel& model, const AuditData& data, std::size_t s) {
+namespace {
+
+// The median over the strike's present modes of log(measured / model before gain), as the gain.
+template <class Factor>
+void fit_gain_with(AuditModel& model, const AuditData& data, std::size_t s, const Factor& factor) {
   std::vector<double> ratios;
   for (std::size_t n = 0; n < model.modes.size(); ++n) {
     const AuditMode& m = model.modes[n];
     if (m.track < 0 || m.amp <= 0.0) continue;
     const TrackObservation& o = data.tracks[std::size_t(m.track)].strikes[s];
     if (!o.present) continue;
-    ratios.push_back(std::log(o.amp / amp_before_gain(model, s, n)));
+    ratios.push_back(std::log(o.amp / (m.amp * factor(n))));
   }
   if (ratios.empty()) {
     model.gain[s] = 1.0;
@@ -222,6 +226,16 @@ void fit_gain(AuditModel& model, const AuditData& data, std::size_t s) {
   }
   std::nth_element(ratios.begin(), ratios.begin() + std::ptrdiff_t(ratios.size() / 2), ratios.end());
   model.gain[s] = std::exp(ratios[ratios.size() / 2]);
+}
+
+}  // namespace
+
+void fit_gain(AuditModel& model, const AuditData& data, std::size_t s) {
+  fit_gain_with(model, data, s, [&](std::size_t n) { return strike_factor(model, s, n); });
+}
+
+void fit_gain(AuditModel& model, const AuditData& data, std::size_t s, std::span<const double> factor) {
+  fit_gain_with(model, data, s, [&](std::size_t n) { return factor[n]; });
 }
 
 }  // namespace ms::audit

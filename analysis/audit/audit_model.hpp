@@ -4,6 +4,7 @@
 // attack transient and per-strike hit patterns).
 #pragma once
 #include <cstddef>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -123,6 +124,9 @@ double strike_variation(const MeasuredStrikes& measured);
 // Per-strike gain from the strike's own measured track amplitudes (median log ratio against the
 // model's amplitudes, contact factor included): the one latent every model has.
 void fit_gain(AuditModel& model, const AuditData& data, std::size_t strike);
+// ... with strike_factor(model, strike, n) given for every mode n (factor.size() == modes), for a caller
+// that fits the gain again while the factors stay (they depend on neither the gain nor the shapes).
+void fit_gain(AuditModel& model, const AuditData& data, std::size_t strike, std::span<const double> factor);
 
 
 }  // namespace ms::audit

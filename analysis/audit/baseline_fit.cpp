@@ -135,21 +135,29 @@ void apply_law(AuditModel& model) {
 }
 
 void fit_amplitudes(AuditModel& model, const AuditData& data, const std::vector<std::size_t>& strikes) {
+  // What each strike does to each mode beyond its gain stays while shapes and gains are fitted.
+  const std::size_t modes = model.modes.size();
+  std::vector<double> factor(strikes.size() * modes, 1.0);
+  for (std::size_t k = 0; k < strikes.size(); ++k)
+    for (std::size_t n = 0; n < modes; ++n)
+      if (model.modes[n].track >= 0) factor[k * modes + n] = strike_factor(model, strikes[k], n);
   for (int round = 0; round < 3; ++round) {
-    for (std::size_t n = 0; n < model.modes.size(); ++n) {
+    for (std::size_t n = 0; n < modes; ++n) {
       AuditMode& m = model.modes[n];
       if (m.track < 0) continue;
       double sum = 0.0;
       int count = 0;
-      for (std::size_t s : strikes) {
+      for (std::size_t k = 0; k < strikes.size(); ++k) {
+        const std::size_t s = strikes[k];
         const TrackObservation& o = data.tracks[std::size_t(m.track)].strikes[s];
         if (!o.present) continue;
-        sum += std::log(o.amp / (model.gain[s] * strike_factor(model, s, n)));
+        sum += std::log(o.amp / (model.gain[s] * factor[k * modes + n]));
         ++count;
       }
       if (count > 0) m.amp = std::exp(sum / count);
     }
-    for (std::size_t s : strikes) fit_gain(model, data, s);
+    for (std::size_t k = 0; k < strikes.size(); ++k)
+      fit_gain(model, data, strikes[k], std::span<const double>(factor).subspan(k * modes, modes));
   }
 }
 
