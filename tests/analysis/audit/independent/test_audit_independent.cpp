@@ -380,10 +380,10 @@ TEST(AuditIndependent, DISABLED_Tuning) {
 // cores): the audit must meet the bars on each half. Disabled because it does not on every fresh run: of
 // the runs of 220 seeds from 44220 to 47959 (each run once, then spent; the next fresh first seed is
 // 47960), four met every bar over the 220 (45320-45539, 46640-46859, 47300-47519 and 47740-47959, the
-// middle two on each half too), the others missed one to four; the default first seed, 44440, is spent. The README ("Auditing a model")
-// gives each run. INDEPENDENT_VERBOSE prints every case; INDEPENDENT_HELDOUT_FIRST runs the same protocol
-// from another first seed (the second half 110 after it). Enable when a change meets the bars on fresh
-// seeds, not on these.
+// middle two on each half too), the others missed one to four; the default first seed, 44440, is spent.
+// The README ("Auditing a model") gives each run. INDEPENDENT_VERBOSE prints every case;
+// INDEPENDENT_HELDOUT_FIRST runs the same protocol from another first seed (the second half 110 after
+// it). Enable when a change meets the bars on fresh seeds, not on these.
 std::size_t held_out_first() { return env_or("INDEPENDENT_HELDOUT_FIRST", 44440); }
 
 TEST(AuditIndependent, DISABLED_HeldOutSeedsMeetTheBarsFirstHalf) {
