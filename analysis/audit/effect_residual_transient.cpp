@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "analysis/audit/decaying_noise_fit.hpp"
 #include "analysis/audit/effect_catalog.hpp"
@@ -175,6 +176,16 @@ AttackComparison compare_attacks(const AuditData& data, const AuditModel& withou
   return out;
 }
 
+// "a white burst", "a burst below 2500 Hz" or "a burst (1200-2500 Hz)" (AttackTransient: both edges 0
+// are white, a low edge of 0 a low-pass).
+std::string burst_band_text(const AttackTransient& t) {
+  char buf[64];
+  if (!t.band_limited()) return "a white burst";
+  if (t.low_hz <= 0.0) std::snprintf(buf, sizeof buf, "a burst below %.0f Hz", t.high_hz);
+  else std::snprintf(buf, sizeof buf, "a burst (%.0f-%.0f Hz)", t.low_hz, t.high_hz);
+  return buf;
+}
+
 Detection detect(const AuditData& data, const AuditModel& current) {
   Detection d;
   d.statistic = attack_excess_db(data);
@@ -208,10 +219,10 @@ Detection detect(const AuditData& data, const AuditModel& current) {
   char buf[600];
   std::snprintf(buf, sizeof buf, "the attack holds noise no mode makes: the high-frequency power of the "
                 "first %.0f ms stands %.1f dB above the decay of 10-30 ms extrapolated back, the mode fit "
-                "had to start %.1f ms after the contact (median over strikes), and a burst (%.0f-%.0f Hz) lowers "
+                "had to start %.1f ms after the contact (median over strikes), and %s lowers "
                 "the attack's gap from %.2f to %.2f dB (in %zu of %zu strikes), by %.1f dB in the %.0f cells it "
                 "fills",
-                1e3 * kAttackS, d.statistic, 1e3 * noise_s, with.transient.low_hz, with.transient.high_hz,
+                1e3 * kAttackS, d.statistic, 1e3 * noise_s, burst_band_text(with.transient).c_str(),
                 attack_before, attack_after, better, before.size(), attacks.filled_gain_db, attacks.filled_cells);
   d.evidence = buf;
   d.extended = std::move(with);

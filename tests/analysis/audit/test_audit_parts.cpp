@@ -332,6 +332,12 @@ TEST(AuditTransient, StrongBurstIsNamedFittedAndExplained) {
   EXPECT_NEAR(r.final_model.transient.level_db, -16.5, 3.0);
   EXPECT_LT(r.gap_after_db, 0.5 * r.gap_before_db);
   EXPECT_GE(r.final_model.modes.size(), 12u);  // the object's own modes stay
+  // The evidence names the band as fitted: both edges 0 are a white burst (never "0-0 Hz").
+  const AttackTransient& t = r.final_model.transient;
+  const std::string& evidence = r.named.front().evidence;
+  const char* band = !t.band_limited() ? "a white burst" : t.low_hz <= 0.0 ? "a burst below " : "a burst (";
+  EXPECT_NE(evidence.find(band), std::string::npos) << evidence;
+  EXPECT_EQ(evidence.find("0-0 Hz"), std::string::npos) << evidence;
 }
 
 TEST(AuditContact, ClosedFormsAndTheHertzTableEqualTheSynthesisersIntegral) {
