@@ -243,12 +243,17 @@ Detection detect(const AuditData& data, const AuditModel& current) {
              bright.db_per_db > 0.0 && data.strike_variation_db >= kMinStrikeVariationDb &&
              in_main_lobe >= kMinModesInMainLobe;
   char buf[500];
-  std::snprintf(buf, sizeof buf, "high modes are weaker than an impulse gives and vary with the strike: contacts of "
-                "%.2f-%.2f ms (%s) explain the mode amplitudes to %.1f dB RMS instead of %.1f dB, shorter in %.0f %% "
-                "of harder strikes; %zu modes below the hardest contact's first spectral zero; the modes above %.0f Hz "
-                "gain %+.2f dB per dB of strike gain on those below", lo * 1e3, hi * 1e3,
-                to_string(with.contact_shape).c_str(), after, before, 100.0 * order, in_main_lobe, bright.split_hz,
-                bright.db_per_db);
+  if (hi <= 0.0)  // the fit kept an impulse for every strike
+    std::snprintf(buf, sizeof buf, "no contact explains the mode amplitudes better than an impulse (%.1f dB RMS); the "
+                  "modes above %.0f Hz gain %+.2f dB per dB of strike gain on those below", before, bright.split_hz,
+                  bright.db_per_db);
+  else
+    std::snprintf(buf, sizeof buf, "high modes are weaker than an impulse gives and vary with the strike: contacts of "
+                  "%.2f-%.2f ms (%s) explain the mode amplitudes to %.1f dB RMS instead of %.1f dB, shorter in %.0f %% "
+                  "of harder strikes; %zu modes below the hardest contact's first spectral zero; the modes above %.0f Hz "
+                  "gain %+.2f dB per dB of strike gain on those below", lo * 1e3, hi * 1e3,
+                  to_string(with.contact_shape).c_str(), after, before, 100.0 * order, in_main_lobe, bright.split_hz,
+                  bright.db_per_db);
   d.evidence = buf;
   d.extended = std::move(with);
   return d;

@@ -340,6 +340,20 @@ TEST(AuditTransient, StrongBurstIsNamedFittedAndExplained) {
   EXPECT_EQ(evidence.find("0-0 Hz"), std::string::npos) << evidence;
 }
 
+// Where the fit keeps an impulse for every strike the detector says so, not "contacts of 0.00-0.00 ms".
+TEST(AuditContact, AnImpulseKeptIsSaidSo) {
+  const HiddenCase hc = generate_hidden_case(5, {}, {});
+  const AuditData data = make_audit_data(hc.recordings);
+  const AuditModel baseline = fit_baseline(data, all_strikes(data));
+  const Detection d = contact_duration_effect().detect(data, baseline);
+  double longest_s = 0.0;
+  for (double t : d.extended->contact_s) longest_s = std::max(longest_s, t);
+  std::printf("%s\n", d.evidence.c_str());
+  EXPECT_FALSE(d.passes);
+  EXPECT_EQ(d.evidence.find("0.00-0.00 ms"), std::string::npos) << d.evidence;
+  EXPECT_EQ(d.evidence.find("no contact explains"), longest_s > 0.0 ? std::string::npos : 0u) << d.evidence;
+}
+
 TEST(AuditContact, ClosedFormsAndTheHertzTableEqualTheSynthesisersIntegral) {
   // Raised cosine and half-sine in closed form (to 1e-9); Hertz's pulse from the table (bilinear in
   // omega tau and decay tau: to 2e-3 of |G| at 1, well below the extraction's amplitude error).
