@@ -137,8 +137,8 @@ TEST(AuditReal, BellFreeVersusMutedIsSupportDamping) {
 }
 
 // A genuine soft-to-hard series of struck metal (five different recordings of a ride-cymbal bell):
-// besides support damping and a noise floor, contact_duration is named, with contacts of ~0.1 ms that
-// shorten as the strike hardens (fitted 0.08-0.12 ms).
+// besides a faint room (its long ring) and a noise floor, contact_duration is named, with contacts of
+// ~0.1 ms that shorten as the strike hardens (fitted 0.05-0.09 ms).
 TEST(AuditReal, RideBellSoftToHardIsContactDuration) {
   REQUIRE_KITS();
   const auto rec = load("The Black Pearl 1.0", {"PaisteBell-Softest.wav", "PaisteBell-Soft.wav", "PaisteBell-Med.wav",
