@@ -137,7 +137,7 @@ TEST(AuditReal, BellFreeVersusMutedIsSupportDamping) {
 }
 
 // A genuine soft-to-hard series of struck metal (five different recordings of a ride-cymbal bell):
-// besides a faint room (its long ring) and a noise floor, contact_duration is named, with contacts of
+// besides a faint long tail read as a room and a noise floor, contact_duration is named, with contacts of
 // ~0.1 ms that shorten as the strike hardens (fitted 0.05-0.09 ms).
 TEST(AuditReal, RideBellSoftToHardIsContactDuration) {
   REQUIRE_KITS();
