@@ -57,10 +57,6 @@ constexpr std::size_t kFitStrikes = 4, kMinRoomStrikes = 3;
 // The strong first guess of a room (mid-band RT60 and DRR of a reverberant lab), tried where the
 // grid's guess has a DRR above kWeakGuessDrrDb.
 constexpr double kStrongGuessRt60S = 0.6, kStrongGuessDrrDb = 0.0, kWeakGuessDrrDb = 6.0;
-// A room strong enough to scatter the extracted decays: tuning rooms support_damping outscored were
-// fitted at DRR 3.0-12.8 dB; the real Paiste and low agogo bells, whose long faint tails fit as rooms
-// of DRR 25 and 21 dB, are better explained by support damping first.
-constexpr double kScatteringRoomDrrDb = 15.0;
 
 // Median over the strikes of a track's decay and energy (amp^2 / 4d, per unit strike gain, dB).
 struct TrackLevel {

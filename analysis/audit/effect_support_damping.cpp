@@ -4,13 +4,14 @@
 // (one-sided excess) describing the (lambda, c) scatter better than a normal law. The evidence says
 // whether a strike's modes share the excess (shared_decay_excess.hpp: a hand that grips harder damps
 // all of them). Extension: the material law becomes the EMG fit's lower edge and each strike gets
-// its per-mode excess decay.
+// its per-mode excess decay; in a room the modes' amplitudes are read again with those decays.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include "analysis/audit/baseline_fit.hpp"
 #include "analysis/audit/effect_catalog.hpp"
+#include "analysis/audit/room_fit.hpp"
 #include "analysis/audit/shared_decay_excess.hpp"
 #include "analysis/damping/damping_fit.hpp"
 
@@ -84,6 +85,17 @@ Detection detect(const AuditData& data, const AuditModel& model) {
   return d;
 }
 
+// The strike's excess per mode: its measured decay above the material law (never below).
+void adapt(const AuditData& data, AuditModel& model, std::size_t s) {
+  for (std::size_t n = 0; n < model.modes.size(); ++n) {
+    const AuditMode& m = model.modes[n];
+    double e = model.support_mean_per_s;
+    if (m.track >= 0 && data.tracks[std::size_t(m.track)].strikes[s].present)
+      e = std::max(0.0, data.tracks[std::size_t(m.track)].strikes[s].decay_per_s - m.decay_per_s);
+    model.extra_decay_per_s[s][n] = e;
+  }
+}
+
 void extend(const AuditData& data, AuditModel& model, const std::vector<std::size_t>& train) {
   const auto pts = track_points(data, train);
   double mean_excess_c = 0.0;
@@ -97,16 +109,14 @@ void extend(const AuditData& data, AuditModel& model, const std::vector<std::siz
   }
   model.support_mean_per_s = 0.5 * mean_excess_c;
   model.extra_decay_per_s.assign(data.strike_count(), std::vector<double>(model.modes.size(), model.support_mean_per_s));
-}
-
-// The strike's excess per mode: its measured decay above the material law (never below).
-void adapt(const AuditData& data, AuditModel& model, std::size_t s) {
-  for (std::size_t n = 0; n < model.modes.size(); ++n) {
-    const AuditMode& m = model.modes[n];
-    double e = model.support_mean_per_s;
-    if (m.track >= 0 && data.tracks[std::size_t(m.track)].strikes[s].present)
-      e = std::max(0.0, data.tracks[std::size_t(m.track)].strikes[s].decay_per_s - m.decay_per_s);
-    model.extra_decay_per_s[s][n] = e;
+  // In a room each mode's amplitude was read with the room's answer to its decay; a strike that damps
+  // a mode faster also shortens that answer, so in a room strong enough to matter the amplitudes are
+  // read again with the strikes' own decays (read with the shared law alone, the excesses lost the
+  // held-out gap beside strong rooms). In a faint one the extracted decays hold, and reading again only
+  // lends hand damping freedom the data do not ask for (the real ride bell's faint room).
+  if (model.room.enabled && model.room.drr_db <= kScatteringRoomDrrDb) {
+    for (std::size_t s : train) adapt(data, model, s);
+    read_amplitudes_in_room(data, model, train);
   }
 }
 
