@@ -16,7 +16,8 @@ constexpr double kMinRoomRt60S = 0.1, kMaxRoomRt60S = 3.0;
 constexpr double kMinRoomDrrDb = -15.0, kMaxRoomDrrDb = 30.0;
 // A room strong enough to scatter the extracted decays: tuning rooms support_damping outscored were
 // fitted at DRR 3.0-12.8 dB; the real Paiste and low agogo bells, whose long faint tails fit as rooms
-// of DRR 25 and 21 dB, are better explained by support damping first.
+// of DRR 25 and 21 dB, are better explained by support damping first. In such a room hand damping's
+// per-strike decays also change each mode's reverberant answer (its amplitudes are read again).
 constexpr double kScatteringRoomDrrDb = 15.0;
 
 struct RoomFit {
