@@ -327,8 +327,11 @@ TEST(AuditIndependent, AStrongShortRoomIsComparedWithItsAnswersRead) {
 // left as the room read them under the shared law, the hand was named beside 4 of 16 tuning rooms
 // (42640-42655; now 13), and on these two it lost 0.14 and 0.58 dB held out once the room was in the model.
 TEST(AuditIndependent, HandDampingBesideAStrongRoomIsNamedAfterIt) {
-  for (std::uint64_t seed : {42649u, 42654u}) {
-    const std::vector<double> strengths = seed == 42649u ? std::vector<double>{0.360, 0.703} : std::vector<double>{0.379, 0.411};
+  const struct {
+    std::uint64_t seed;
+    std::vector<double> strengths;  // room, hand
+  } cases[] = {{42649, {0.360, 0.703}}, {42654, {0.379, 0.411}}};
+  for (const auto& [seed, strengths] : cases) {
     const indep::IndependentCase c = indep::generate_independent_case(seed, {"reverberation", "support_damping"}, strengths);
     const audit::AuditResult r = audit::run_audit(audit::make_audit_data(c.recordings));
     std::printf("%s\n  named:", c.summary.c_str());
