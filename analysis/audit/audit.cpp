@@ -187,7 +187,7 @@ AuditResult run_audit(const AuditData& data, const std::optional<ModalModel>& gi
         TrainedFolds with_trained;
         c.cv_gap_db = cross_validated_gap(data, with, &with_folds, nullptr, &trained, &with_trained);
         c.improvement_db = cv - c.cv_gap_db - e.penalty_db;
-        if (c.improvement_db > 0.0)
+        if (c.improvement_db > 0.0 || (det.held_out_blind && cv - c.cv_gap_db >= -e.penalty_db))
           passed.push_back({&e, det, std::move(with_folds), std::move(with_trained), c.cv_gap_db, c.improvement_db});
       }
       round.push_back(c);
@@ -206,7 +206,7 @@ AuditResult run_audit(const AuditData& data, const std::optional<ModalModel>& gi
     AuditModel next = fit_last_effect(data, recipe, current, chosen->detection.extended);
     const double next_gap = mean_gap(next, data);
     result.named.push_back({best->name, gap, next_gap, cv - chosen->cv_gap_db, best->parameters(data, next),
-                            chosen->detection.evidence});
+                            chosen->detection.evidence, 0.0, chosen->improvement_db <= 0.0});
     gap = next_gap;
     cv = chosen->cv_gap_db;
     folds = std::move(chosen->folds);

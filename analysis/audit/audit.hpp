@@ -31,6 +31,9 @@ struct NamedEffect {
   Parameters parameters;
   std::string evidence;
   double share_above_floor = 0.0;  // cv_improvement_db / (held-out baseline gap - repeatability floor)
+  // Named on its detector's own test where the held-out gap cannot judge it (Detection::held_out_blind),
+  // without a held-out improvement beyond its penalty.
+  bool named_on_own_test = false;
 };
 
 struct Candidate {

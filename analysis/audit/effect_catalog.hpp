@@ -21,6 +21,10 @@ struct Detection {
   // Effects whose evidence this one also explains: where this one passes in the same round and
   // improves the held-out gap, it is named before them even if they improve it more.
   std::vector<std::string> precedes;
+  // The held-out gap is blind to this effect beside the current model (a law beside hand damping: each
+  // held-out strike keeps its own decays), and the detector's own test has decided: it is then named
+  // where it costs the held-out gap no more than its penalty.
+  bool held_out_blind = false;
   // The current model with this effect extended on every strike, where the detector built it: naming
   // the effect then starts from it (fit_last_effect).
   std::optional<AuditModel> extended;

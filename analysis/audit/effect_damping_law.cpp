@@ -5,14 +5,16 @@
 // a deviation counts only where it exceeds what repeated strikes of the same mode disagree by. This
 // separates a weak hybrid law (decays precise, systematically off) from support damping (decays
 // scattered per strike). Both look only at the tracks the model's modes sit on: those a room's answer
-// or a burst's noise made, which the model has dropped, do not decay on the object's law. Extension:
-// the hybrid law's decays.
+// or a burst's noise made, which the model has dropped, do not decay on the object's law. Beside hand
+// damping, where the held-out gap is blind to a law, the decays' lower edge decides (lower_edge_bend.hpp).
+// Extension: the hybrid law's decays.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include "analysis/audit/baseline_fit.hpp"
 #include "analysis/audit/effect_catalog.hpp"
+#include "analysis/audit/lower_edge_bend.hpp"
 #include "analysis/damping/damping_fit.hpp"
 
 namespace ms::audit {
@@ -96,6 +98,17 @@ Detection detect(const AuditData& data, const AuditModel& current) {
                 "exponent alpha3 = %.2f by %.0f %% (weighted by strike-to-strike scatter: %.0f)",
                 100.0 * before, hybrid.alpha3, 100.0 * after, d.statistic);
   d.evidence = buf;
+  // Beside hand damping every strike keeps its own decays, so the held-out gap cannot judge a law: the
+  // lower edge of their scatter does.
+  if (!current.extra_decay_per_s.empty())
+    if (const auto bend = lower_edge_bend(data, current); bend && bend->bends()) {
+      d.passes = true;
+      d.held_out_blind = true;
+      std::snprintf(buf, sizeof buf, "; beside the hand's per-strike decays, which leave the held-out gap blind to "
+                    "a law, their lower edge bends (hybrid EMG law, alpha3 = %.2f, 2 dlogL = %.1f over Rayleigh)",
+                    bend->alpha3, bend->loglik2);
+      d.evidence += buf;
+    }
   return d;
 }
 

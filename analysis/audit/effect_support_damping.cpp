@@ -12,6 +12,7 @@
 
 #include "analysis/audit/baseline_fit.hpp"
 #include "analysis/audit/effect_catalog.hpp"
+#include "analysis/audit/lower_edge_bend.hpp"
 #include "analysis/audit/room_fit.hpp"
 #include "analysis/audit/shared_decay_excess.hpp"
 #include "analysis/damping/damping_fit.hpp"
@@ -21,9 +22,6 @@ namespace ms::audit {
 namespace {
 
 constexpr double kMinSpread = 0.15;  // median (max d - min d) / min d over modes (tuning seeds)
-// Twice the log-likelihood gain of a bent (hybrid) EMG law over a Rayleigh one above which the
-// evidence says the lower edge bends: chi-square, one degree of freedom, p = 0.001.
-constexpr double kMinBendLogLik2 = 10.83;
 
 struct Spread {
   double median_spread = 0.0;
@@ -69,10 +67,8 @@ Detection detect(const AuditData& data, const AuditModel& model) {
   std::snprintf(buf, sizeof buf, "the same mode decays up to %.0f %% faster in one strike than in another "
                 "(median over %zu modes)", 100.0 * sp.median_spread, sp.modes);
   d.evidence = buf;
-  bool shared_by_modes = false;
   if (d.passes) {
     const SharedDecayExcess shared = shared_decay_excess(data);
-    shared_by_modes = shared.modes >= kMinSharedModes && shared.shared();
     if (shared.modes >= kMinSharedModes) {
       std::snprintf(buf, sizeof buf, "; %s by a strike's modes (F = %.2f, p = %.2g over %zu modes)",
                     shared.shared() ? "shared" : "not shared", shared.f, shared.p, shared.modes);
@@ -87,18 +83,12 @@ Detection detect(const AuditData& data, const AuditModel& model) {
                     "the material law, spread %.2f 1/s", 0.5 / *emg.eta_s, 0.5 * *emg.sigma_per_s);
       d.evidence += buf;
     }
-    // Once each strike's decays are its own, a law beside the hand barely changes a held-out gap, so it
-    // is seldom named after support damping; the scatter's lower edge can still show it bend. Only for
-    // a hand that damps a strike's modes together and outside a room: a room's answers bend the edge too.
-    const bool room = model.room.enabled || model.reverb.enabled;
-    if (shared_by_modes && !room && model.law.kind != DampingKind::hybrid && emg.loglik) {
-      const DampingFit bent = fit_damping(pts, DampingKind::hybrid, DampingEstimator::emg);
-      const double gain = bent.loglik ? 2.0 * (*bent.loglik - *emg.loglik) : 0.0;
-      if (gain >= kMinBendLogLik2) {
-        std::snprintf(buf, sizeof buf, "; its lower edge bends (hybrid EMG law, alpha3 = %.2f, 2 dlogL = %.1f "
-                      "over Rayleigh): a damping law may hide beside it", bent.law.alpha3, gain);
-        d.evidence += buf;
-      }
+    // Once each strike's decays are its own, a law beside the hand barely changes a held-out gap; the
+    // scatter's lower edge can still show it (damping_law is then named on it).
+    if (const auto bend = lower_edge_bend(data, model); bend && bend->bends()) {
+      std::snprintf(buf, sizeof buf, "; its lower edge bends (hybrid EMG law, alpha3 = %.2f, 2 dlogL = %.1f "
+                    "over Rayleigh): a damping law may hide beside it", bend->alpha3, bend->loglik2);
+      d.evidence += buf;
     }
   }
   return d;

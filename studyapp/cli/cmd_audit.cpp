@@ -38,6 +38,7 @@ nlohmann::json result_json(const AuditResult& r, const audit::AuditData& data) {
                      {"gap_after", n.gap_after_db},
                      {"cv_improvement", n.cv_improvement_db},
                      {"share_above_floor", n.share_above_floor},
+                     {"named_on_own_test", n.named_on_own_test},
                      {"parameters", params},
                      {"evidence", n.evidence}});
   }
@@ -253,8 +254,13 @@ void register_audit(CLI::App& app) {
                     "point, too weak for its detector)\n",
                     r.left_shared.mean_db, r.left_shared.standard_error_db, audit::kSharedResolutionDb);
       for (const auto& n : r.named) {
-        std::printf("+ %-17s gap %.2f -> %.2f dB, closes %.0f %% of the gap above the floor: %s\n", n.effect.c_str(),
-                    n.gap_before_db, n.gap_after_db, 100.0 * n.share_above_floor, n.evidence.c_str());
+        if (n.named_on_own_test)
+          std::printf("+ %-17s gap %.2f -> %.2f dB, named on its own test (the held-out gap cannot judge it here; "
+                      "held-out change %+.2f dB): %s\n", n.effect.c_str(), n.gap_before_db, n.gap_after_db,
+                      std::round(100.0 * n.cv_improvement_db) / 100.0 + 0.0, n.evidence.c_str());  // no "-0.00"
+        else
+          std::printf("+ %-17s gap %.2f -> %.2f dB, closes %.0f %% of the gap above the floor: %s\n", n.effect.c_str(),
+                      n.gap_before_db, n.gap_after_db, 100.0 * n.share_above_floor, n.evidence.c_str());
         for (const auto& [k, v] : n.parameters) std::printf("    %s = %.4g\n", k.c_str(), v);
       }
       std::printf("final: %.2f dB (held-out %.2f dB; %.0f %% of the gap above the floor closed)\n", r.gap_after_db,

@@ -79,6 +79,29 @@ TEST(AuditCli, GenerateThenAuditNamesTheHiddenEffectAndWritesAReport) {
 
 // Clean strikes with independent per-mode jitter: nothing named, and the audit says nothing the strikes
 // share is missing rather than that its catalog fell short.
+// Beside hand damping each held-out strike keeps its own decays, so a law there is named on its own
+// test (the decays' lower edge bends), and the output says so instead of a share of the gap.
+TEST(AuditCli, ALawBesideAHandIsNamedOnItsOwnTest) {
+  TempDir d;
+  const RunResult g = run_cli("audit-generate --seed 3 --effects support_damping,damping_law --strength 0.6,0.6 -o " +
+                              d.file("case"), d);
+  ASSERT_EQ(g.exit_code, 0) << g.err;
+  const RunResult r = run_cli("audit --measured" + strikes(d, "case", 5) + " --json", d);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["named_effects"].size(), 2u) << r.out;
+  EXPECT_EQ(j["named_effects"][0]["effect"], "support_damping");
+  EXPECT_FALSE(j["named_effects"][0]["named_on_own_test"].get<bool>());
+  EXPECT_EQ(j["named_effects"][1]["effect"], "damping_law");
+  EXPECT_TRUE(j["named_effects"][1]["named_on_own_test"].get<bool>());
+  EXPECT_NE(j["named_effects"][1]["evidence"].get<std::string>().find("lower edge bends"), std::string::npos);
+  const RunResult text = run_cli("audit --measured" + strikes(d, "case", 5), d);
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  const std::size_t law = text.out.find("+ damping_law");
+  ASSERT_NE(law, std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("named on its own test", law), std::string::npos) << text.out;
+}
+
 TEST(AuditCli, CleanJitteredStrikesShareNothingTheModelLacks) {
   TempDir d;
   const RunResult g = run_cli("audit-generate --seed 32 --jitter-db 2 -o " + d.file("case"), d);
