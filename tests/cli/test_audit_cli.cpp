@@ -77,8 +77,6 @@ TEST(AuditCli, GenerateThenAuditNamesTheHiddenEffectAndWritesAReport) {
   EXPECT_LT(j2["gap_before"].get<double>(), 1.5 * j["gap_after"].get<double>() + 0.3);
 }
 
-// Clean strikes with independent per-mode jitter: nothing named, and the audit says nothing the strikes
-// share is missing rather than that its catalog fell short.
 // Beside hand damping each held-out strike keeps its own decays, so a law there is named on its own
 // test (the decays' lower edge bends), and the output says so instead of a share of the gap.
 TEST(AuditCli, ALawBesideAHandIsNamedOnItsOwnTest) {
@@ -102,6 +100,8 @@ TEST(AuditCli, ALawBesideAHandIsNamedOnItsOwnTest) {
   EXPECT_NE(text.out.find("named on its own test", law), std::string::npos) << text.out;
 }
 
+// Clean strikes with independent per-mode jitter: nothing named, and the audit says nothing the strikes
+// share is missing rather than that its catalog fell short.
 TEST(AuditCli, CleanJitteredStrikesShareNothingTheModelLacks) {
   TempDir d;
   const RunResult g = run_cli("audit-generate --seed 32 --jitter-db 2 -o " + d.file("case"), d);

@@ -347,7 +347,7 @@ TEST(AuditIndependent, HandDampingBesideAStrongRoomIsNamedAfterIt) {
 }
 
 // Once hand damping is named each strike's decays are its own, so a law beside it barely changes a
-// held-out gap: on tuning pairs 42556-42571 it lowered none and was named after the hand on 4 of 16.
+// held-out gap: on tuning pairs 42556-42571 it lowered it, and was named after the hand, on 4 of 16.
 // The lower edge of the decays' scatter decides instead: a hybrid EMG law against a Rayleigh one gave
 // 2 dlogL of 11-113 for 14 of those 16 laws (11 now named) and at most 3.4 for 16 hands alone
 // (42540-42555; 1.0 for 42543, the largest where the hand damps a strike's modes together, which the
