@@ -59,8 +59,8 @@ constexpr double kMaxWeakAttackDeficitDb = -4.0;
 // modes can sit under them in every Bark cell, yet the mode fit sees its noise. Independent generator's
 // tuning seeds 42700-42849: bursts of -25 to -21 dB 6.5-18.9 ms in 19 of 20 (one 0.0 ms, named by the
 // other tests); contacts up to 8.0 ms (2 of 60 over 5 ms), each named first by its own larger gain, so
-// the contact is in the model when the burst is tried again; 70 rooms, hands, laws, doublets, noise
-// floors and hit points 0.0 ms.
+// the contact is in the model when the burst is tried again; 70 cases of rooms, hands, laws, doublets,
+// noise floors and hit points: 0.0 ms.
 constexpr double kMinLongAttackNoiseS = 5e-3;
 constexpr double kMinMs = 0.5, kMaxMs = 40.0;
 constexpr double kMinLevelDb = -60.0, kMaxLevelDb = 10.0;
