@@ -65,6 +65,11 @@ void print_case(const CasePlan& plan, const indep::IndependentCase& c, const aud
   std::fflush(stdout);
 }
 
+// The audit of one generated case hiding one effect.
+audit::AuditResult audit_one_effect(std::uint64_t seed, const std::string& effect, double strength) {
+  return audit::run_audit(audit::make_audit_data(indep::generate_independent_case(seed, {effect}, {strength}).recordings));
+}
+
 // Runs cases [first, first + count) of the plan (case i uses seed first + i); prints the tally.
 // only: every case hides that effect alone (at the plan's strength), to tune one detector.
 Tally run_cases(std::size_t first, std::size_t count, bool grid_strengths, bool verbose, const std::string& only = "") {
@@ -218,8 +223,7 @@ TEST(AuditIndependent, AWeakBurstIsNamedWhereTheAttackHoldsNoiseNoModeMakes) {
 // there) are not taken for bursts.
 TEST(AuditIndependent, AnAlmostInaudibleBurstIsNamedByTheCellsItFills) {
   const auto audit_tuning_case = [](std::uint64_t seed, const std::string& effect) {  // at its tuning strength
-    const double strength = 0.1 + 0.2 * double(seed % 5);
-    return audit::run_audit(audit::make_audit_data(indep::generate_independent_case(seed, {effect}, {strength}).recordings));
+    return audit_one_effect(seed, effect, 0.1 + 0.2 * double(seed % 5));
   };
   for (std::uint64_t seed : {42000u, 42016u, 42020u}) {
     const audit::AuditResult r = audit_tuning_case(seed, "residual_transient");
@@ -240,15 +244,12 @@ TEST(AuditIndependent, AnAlmostInaudibleBurstIsNamedByTheCellsItFills) {
 // attack noise lasts as long (42756: 6.5 ms, 42779: 8.0 ms) are named first by their own larger gain,
 // and the burst is not tried again beside a contact in the model.
 TEST(AuditIndependent, ABurstUnderEveryCellIsNamedByTheNoiseTheModeFitFinds) {
-  const auto audit_case = [](std::uint64_t seed, const std::string& effect, double strength) {
-    return audit::run_audit(audit::make_audit_data(indep::generate_independent_case(seed, {effect}, {strength}).recordings));
-  };
-  const audit::AuditResult burst = audit_case(42708, "residual_transient", 0.004);
+  const audit::AuditResult burst = audit_one_effect(42708, "residual_transient", 0.004);
   ASSERT_FALSE(burst.named.empty());
   EXPECT_EQ(burst.named.front().effect, "residual_transient");
   EXPECT_GT(burst.named.front().cv_improvement_db, 0.0);
   for (const auto& [seed, strength] : {std::pair{42756u, 0.927}, std::pair{42779u, 0.813}}) {
-    const audit::AuditResult r = audit_case(seed, "contact_duration", strength);
+    const audit::AuditResult r = audit_one_effect(seed, "contact_duration", strength);
     ASSERT_FALSE(r.named.empty()) << seed;
     EXPECT_EQ(r.named.front().effect, "contact_duration") << seed;
     for (const auto& n : r.named) EXPECT_NE(n.effect, "residual_transient") << seed;
