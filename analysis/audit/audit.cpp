@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 #include <string>
 
@@ -88,6 +89,29 @@ void place_shapes(const ObjectShapes& shapes, const ModalModel& given, const std
     for (std::size_t j = 0; j < model.modes.size(); ++j)
       if (home[j] > 0.0) hit.shape_ln[p][j] = 0.5 * std::log(there[j] / home[j]);
   }
+}
+
+// What the training strikes share is read from three at least: from one or two it is their own values
+// (two strikes of a bell, one free and one muted, would name nothing).
+constexpr std::size_t kMinStrikesForRival = 4;
+
+// Whether a candidate's held-out gap is not above its strike-free rival's (the same extension, every
+// strike given what the training strikes share) by more than the candidate's penalty; its note says
+// which, with both gaps.
+bool beats_strike_free_rival(const AuditData& data, const Recipe& recipe, const TrainedFolds& trained, const Effect& e,
+                             Candidate& c) {
+  Effect rival = e;
+  rival.extend = e.strike_free_rival;
+  rival.adapt = nullptr;
+  Recipe with_rival = recipe;
+  with_rival.effects.push_back(&rival);
+  const double rival_db = cross_validated_gap(data, with_rival, nullptr, nullptr, &trained);
+  const bool beats = c.cv_gap_db < rival_db + e.penalty_db;
+  char buf[240];
+  std::snprintf(buf, sizeof buf, "; held out it leaves %.2f dB, and %.2f dB with what the strikes share alone: what it "
+                "gains is %s", c.cv_gap_db, rival_db, beats ? "the strikes' own" : "not the strikes' own, so it is not named");
+  c.note += buf;
+  return beats;
 }
 
 std::vector<GapMap> maps_of(const AuditData& data, const AuditModel& model) {
@@ -187,7 +211,10 @@ AuditResult run_audit(const AuditData& data, const std::optional<ModalModel>& gi
         TrainedFolds with_trained;
         c.cv_gap_db = cross_validated_gap(data, with, &with_folds, nullptr, &trained, &with_trained);
         c.improvement_db = cv - c.cv_gap_db - e.penalty_db;
-        if (c.improvement_db > 0.0 || (det.held_out_blind && cv - c.cv_gap_db >= -e.penalty_db))
+        const bool strikes_own = c.improvement_db <= 0.0 || !e.strike_free_rival ||
+                                 data.strike_count() < kMinStrikesForRival ||
+                                 beats_strike_free_rival(data, recipe, trained, e, c);
+        if (strikes_own && (c.improvement_db > 0.0 || (det.held_out_blind && cv - c.cv_gap_db >= -e.penalty_db)))
           passed.push_back({&e, det, std::move(with_folds), std::move(with_trained), c.cv_gap_db, c.improvement_db});
       }
       round.push_back(c);

@@ -43,6 +43,11 @@ struct Effect {
   void (*extend)(const AuditData& data, AuditModel& model, const std::vector<std::size_t>& train) = nullptr;
   void (*adapt)(const AuditData& data, AuditModel& model, std::size_t strike) = nullptr;  // may be null
   Parameters (*parameters)(const AuditData& data, const AuditModel& model) = nullptr;
+  // An effect whose latent values vary from strike to strike may gain held out by what they share: the
+  // same extension with no latent values (each strike given what the training strikes share). Where it
+  // is set, the effect is named only where its held-out gap is not above this rival's by more than its
+  // penalty.
+  void (*strike_free_rival)(const AuditData& data, AuditModel& model, const std::vector<std::size_t>& train) = nullptr;
 };
 
 Effect support_damping_effect();

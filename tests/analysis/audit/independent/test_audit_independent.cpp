@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <optional>
@@ -448,6 +449,36 @@ TEST(AuditIndependent, TheRoomsAnswerToEachModeIsReadInTheFittedRoom) {
   EXPECT_LT(with_answers, without - 0.02);
 }
 
+// In a room the extraction reads each mode's decay off the mode and the room's answer to it, and decays
+// per mode taken from those readings lower the held-out gap with nothing that differs from strike to
+// strike. Hand damping is named only where the strikes' own excesses do better than each mode's excess
+// shared by every strike: after the rooms alone of tuning seeds 42874 and 42914 it was named (0.45 and
+// 0.47 dB held out) where the shared excess left a gap 0.11 and 0.54 dB lower; the hand hidden beside the
+// room of 42952 leaves a gap 0.62 dB lower than its rival and is named.
+TEST(AuditIndependent, HandDampingInARoomGainsByWhatDiffersFromStrikeToStrike) {
+  const struct {
+    std::uint64_t seed;
+    std::vector<std::string> effects;
+    std::vector<double> strengths;
+    bool hand_hidden;
+  } cases[] = {{42874, {"reverberation"}, {0.323}, false},
+               {42914, {"reverberation"}, {0.842}, false},
+               {42952, {"reverberation", "support_damping"}, {0.722, 0.733}, true}};
+  for (const auto& k : cases) {
+    const indep::IndependentCase c = indep::generate_independent_case(k.seed, k.effects, k.strengths);
+    const audit::AuditResult r = audit::run_audit(audit::make_audit_data(c.recordings));
+    ASSERT_FALSE(r.named.empty()) << k.seed;
+    EXPECT_EQ(r.named.front().effect, "reverberation") << k.seed;
+    ASSERT_GE(r.rounds.size(), 2u) << k.seed;
+    const auto hand = std::ranges::find(r.rounds[1], std::string("support_damping"), &audit::Candidate::effect);
+    ASSERT_NE(hand, r.rounds[1].end()) << k.seed;
+    std::printf("%llu: %s\n", static_cast<unsigned long long>(k.seed), hand->note.c_str());
+    EXPECT_NE(hand->note.find("with what the strikes share alone"), std::string::npos) << k.seed;
+    const bool named = std::ranges::count(r.named, std::string("support_damping"), &audit::NamedEffect::effect) > 0;
+    EXPECT_EQ(named, k.hand_hidden) << k.seed;
+  }
+}
+
 TEST(AuditIndependent, DISABLED_Tuning) {
   const char* only = std::getenv("INDEPENDENT_TUNING_ONLY");
   const Tally tally = run_cases(env_or("INDEPENDENT_TUNING_FIRST", 40000), env_or("INDEPENDENT_TUNING_COUNT", 44), true, true,
@@ -455,11 +486,11 @@ TEST(AuditIndependent, DISABLED_Tuning) {
   EXPECT_GT(tally.clean, 0);
 }
 
-// Held-out seeds (never used for tuning: not 1000-1179, 5000-15959, 40000-42999), strengths drawn from
+// Held-out seeds (never used for tuning: not 1000-1179, 5000-16199, 40000-42999), strengths drawn from
 // (0, 1), in two halves (each 110 cases, 10 of each effect alone, 20 clean, 10 pairs; ~4 min each on two
 // cores): the audit must meet the bars on each half. Disabled because it does not on every fresh run: of
-// the runs of 220 seeds from 44220 to 49499 (each run once, then spent; the next fresh first seed is
-// 49500), six met every bar over the 220 (45320-45539, 46640-46859, 47300-47519, 47740-47959,
+// the runs of 220 seeds from 44220 to 49719 (each run once, then spent; the next fresh first seed is
+// 49720), six met every bar over the 220 (45320-45539, 46640-46859, 47300-47519, 47740-47959,
 // 48180-48399 and 49280-49499; all but the first and 47740-47959 on each half too), the others
 // missed one to four; the default first seed, 44440, is spent.
 // docs/AUDIT_PROOF.md gives each run. INDEPENDENT_VERBOSE prints every case;
