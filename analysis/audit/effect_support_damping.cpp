@@ -144,8 +144,8 @@ void extend(const AuditData& data, AuditModel& model, const std::vector<std::siz
 // every strike. In a room the extraction reads each mode's decay off its own and the room's answer, and
 // per-mode decays from those readings can lower the held-out gap with nothing strike-dependent to gain
 // (tuning rooms 42870-42919 and four rooms of a fresh run: each time the hand was named after the room
-// alone, this rival left a held-out gap 0.11-0.64 dB lower; hands hidden beside a room, at most 0.18 dB
-// higher, and in 20 of 21 by no more than the hand's penalty).
+// alone, this rival left a held-out gap 0.11-0.64 dB lower than the hand's; where a hand hid beside the
+// room, at most 0.18 dB lower, and in 20 of 21 pairs no more than the hand's penalty lower).
 void extend_strike_free(const AuditData& data, AuditModel& model, const std::vector<std::size_t>& train) {
   fit_law_and_mean_excess(data, model, train);
   for (std::size_t n = 0; n < model.modes.size(); ++n) {
