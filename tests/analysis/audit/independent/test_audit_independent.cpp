@@ -66,9 +66,14 @@ void print_case(const CasePlan& plan, const indep::IndependentCase& c, const aud
   std::fflush(stdout);
 }
 
-// The audit of one generated case hiding one effect.
+// The audit of one generated case hiding these effects at these strengths.
+audit::AuditResult audit_hidden(std::uint64_t seed, const std::vector<std::string>& effects,
+                                const std::vector<double>& strengths) {
+  return audit::run_audit(audit::make_audit_data(indep::generate_independent_case(seed, effects, strengths).recordings));
+}
+
 audit::AuditResult audit_one_effect(std::uint64_t seed, const std::string& effect, double strength) {
-  return audit::run_audit(audit::make_audit_data(indep::generate_independent_case(seed, {effect}, {strength}).recordings));
+  return audit_hidden(seed, {effect}, {strength});
 }
 
 // Runs cases [first, first + count) of the plan (case i uses seed first + i); prints the tally.
@@ -465,8 +470,7 @@ TEST(AuditIndependent, HandDampingInARoomGainsByWhatDiffersFromStrikeToStrike) {
                {42914, {"reverberation"}, {0.842}, false},
                {42952, {"reverberation", "support_damping"}, {0.722, 0.733}, true}};
   for (const auto& k : cases) {
-    const indep::IndependentCase c = indep::generate_independent_case(k.seed, k.effects, k.strengths);
-    const audit::AuditResult r = audit::run_audit(audit::make_audit_data(c.recordings));
+    const audit::AuditResult r = audit_hidden(k.seed, k.effects, k.strengths);
     ASSERT_FALSE(r.named.empty()) << k.seed;
     EXPECT_EQ(r.named.front().effect, "reverberation") << k.seed;
     ASSERT_GE(r.rounds.size(), 2u) << k.seed;
