@@ -12,12 +12,15 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <future>
 #include <numbers>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "analysis/audit/audit.hpp"
 #include "analysis/audit/audit_model.hpp"
+#include "analysis/audit/baseline_fit.hpp"
 #include "analysis/audit/room_fit.hpp"
 #include "analysis/audit/room_power.hpp"
 #include "../audit_cases.hpp"
@@ -32,6 +35,7 @@ constexpr std::array<std::size_t, 7> kGeneratorBandOfOctave{0, 0, 1, 1, 2, 2, 3}
 struct TruthFit {
   double level_only_db = 0.0;      // the true modes at one fitted overall level
   double amplitudes_read_db = 0.0; // ... and each mode's amplitude read from the recordings
+  double log_level = 0.0;          // the overall level found
 };
 
 ms::Room true_room(const indep::IndependentCase& c) {
@@ -45,8 +49,11 @@ ms::Room true_room(const indep::IndependentCase& c) {
 // Mean gap of the strikes against their true modes, in `room` if given; with `jitter`, each strike's
 // modes as rendered, else without their per-strike amplitude jitter.
 // noise: a noise floor per Bark band (audit::AuditModel::noise_band_variance) added to each strike's modes.
+// decay_shift (if given): added to mode n's decay in every strike (a law's change, each strike's own
+// excess kept). at_log_level (if given): the overall level, not searched; level_only_db alone is filled.
 TruthFit truth_gap(const indep::IndependentCase& c, const audit::AuditData& data, const ms::Room* room, bool jitter,
-                   const std::vector<double>& noise = {}) {
+                   const std::vector<double>& noise = {}, const std::vector<double>* decay_shift = nullptr,
+                   const double* at_log_level = nullptr) {
   const std::size_t strikes = data.strike_count(), modes = c.strikes[0].modes.size();
   const double fs = data.measured.sample_rate_hz;
   std::vector<double> factor(modes, 1.0);
@@ -58,7 +65,7 @@ TruthFit truth_gap(const indep::IndependentCase& c, const audit::AuditData& data
       m.noise_band_variance = noise;
       for (std::size_t n = 0; n < modes; ++n) {
         const indep::DampedMode& t = c.strikes[s].modes[n];
-        m.modes.push_back({.freq_hz = t.freq_hz, .decay_per_s = t.decay_per_s,
+        m.modes.push_back({.freq_hz = t.freq_hz, .decay_per_s = decay_shift ? std::max(1e-3, t.decay_per_s + (*decay_shift)[n]) : t.decay_per_s,
                            .amp = std::abs(t.amp) * std::exp(log_level) * factor[n] *
                                   (jitter ? 1.0 : std::pow(10.0, -c.strikes[s].jitter_db[n] / 20.0)),
                            .track = 0,
@@ -75,12 +82,13 @@ TruthFit truth_gap(const indep::IndependentCase& c, const audit::AuditData& data
     }
     return total / double(strikes);
   };
+  if (at_log_level) return {.level_only_db = gap_at(*at_log_level), .log_level = *at_log_level};
   double best = 1e300, level = 0.0;
   for (double l = -12.0; l <= 12.0; l += 0.5)
     if (const double g = gap_at(l); g < best) { best = g; level = l; }
   for (double l = level - 0.5; l <= level + 0.5; l += 0.05)
     if (const double g = gap_at(l); g < best) { best = g; level = l; }
-  TruthFit fit{.level_only_db = best};
+  TruthFit fit{.level_only_db = best, .log_level = level};
   for (std::size_t n = 0; n < modes; ++n) {  // one sweep, mode by mode
     double kept = factor[n];
     for (double lx = -1.5; lx <= 1.51; lx += 0.5) {
@@ -91,6 +99,69 @@ TruthFit truth_gap(const indep::IndependentCase& c, const audit::AuditData& data
   }
   fit.amplitudes_read_db = best;
   return fit;
+}
+
+// The shift of each object mode's decay from its law to the Rayleigh law closest to it (relative least
+// squares), that law scaled at the lowest and the highest mode by the factors of a 7 x 7 grid, the one
+// whose gap is lowest at the overall level the true decays take: the best a Rayleigh law does with
+// everything else true.
+std::vector<double> shift_to_nearest_rayleigh(const indep::IndependentCase& c, const audit::AuditData& data,
+                                              const ms::Room* room) {
+  if (c.object.size() != c.strikes[0].modes.size()) throw std::invalid_argument("a doublet splits a mode");
+  std::vector<DampingPoint> points;
+  double f_lo = 1e300, f_hi = 0.0;
+  for (const indep::ObjectMode& m : c.object) {
+    points.push_back(damping_point(m.freq_hz, m.decay_per_s));
+    f_lo = std::min(f_lo, m.freq_hz);
+    f_hi = std::max(f_hi, m.freq_hz);
+  }
+  const DampingLaw fitted = audit::fit_law_relative(points, DampingKind::rayleigh);
+  const auto d_at = [&](double f) {
+    const double w = 2.0 * std::numbers::pi * f;
+    return fitted.decay_per_s(w * w);
+  };
+  const auto shift_of = [&](double scale_lo, double scale_hi) {
+    // d = a + b f^2 through the scaled law's values at f_lo and f_hi.
+    const double d_lo = scale_lo * d_at(f_lo), d_hi = scale_hi * d_at(f_hi);
+    const double b = std::max(0.0, (d_hi - d_lo) / (f_hi * f_hi - f_lo * f_lo)), a = std::max(0.0, d_lo - b * f_lo * f_lo);
+    std::vector<double> shift;
+    for (const indep::ObjectMode& m : c.object) shift.push_back(a + b * m.freq_hz * m.freq_hz - m.decay_per_s);
+    return shift;
+  };
+  const double level = truth_gap(c, data, room, false).log_level;
+  std::vector<double> best;
+  double best_gap = 1e300;
+  for (double lo : {0.8, 0.87, 0.93, 1.0, 1.07, 1.15, 1.25})
+    for (double hi : {0.7, 0.8, 0.9, 1.0, 1.12, 1.25, 1.4}) {
+      const std::vector<double> shift = shift_of(lo, hi);
+      if (const double g = truth_gap(c, data, room, false, {}, &shift, &level).level_only_db; g < best_gap) {
+        best_gap = g;
+        best = shift;
+      }
+    }
+  return best;
+}
+
+// The true modes (without their jitter, each amplitude read) with their own decays and on the nearest
+// Rayleigh law, in `room` if given.
+struct LawGain {
+  TruthFit with_law, on_rayleigh;
+  double gain_db() const { return on_rayleigh.amplitudes_read_db - with_law.amplitudes_read_db; }
+};
+
+LawGain law_gain(const indep::IndependentCase& c, const audit::AuditData& data, const ms::Room* room) {
+  const std::vector<double> shift = shift_to_nearest_rayleigh(c, data, room);
+  return {truth_gap(c, data, room, false), truth_gap(c, data, room, false, {}, &shift)};
+}
+
+// The case ORACLE_SEED, ORACLE_EFFECTS and ORACLE_STRENGTHS name.
+indep::IndependentCase oracle_case() {
+  std::vector<std::string> effects;
+  std::vector<double> strengths;
+  env_case("ORACLE", effects, strengths);
+  const char* seed = std::getenv("ORACLE_SEED");
+  if (seed == nullptr) throw std::invalid_argument("set ORACLE_SEED");
+  return indep::generate_independent_case(std::stoull(seed), effects, strengths);
 }
 
 // The audit's modes (its final model's, dry) in `room`, each amplitude read again as the room's fit does.
@@ -172,16 +243,47 @@ TEST(AuditRoomOracle, AShortRoomBehindSlowModesBarelyMovesEvenTheTrueModesGap) {
   EXPECT_GT(gain_db[1], 0.5);
 }
 
+// The truth's view of a law, for sorting the audit's misses: with every mode's frequency, amplitude and
+// the room true, how much the generator's law lowers the gap below the nearest Rayleigh law's
+// (shift_to_nearest_rayleigh). Two laws beside a room the audit missed on a held-out run: on 49521
+// (strength 0.02, DRR 2.1 dB) the Rayleigh law does 0.10 dB better, so no audit could name it; on 49620
+// (strength 0.82, DRR 5.6 dB) the law gains 0.66 dB, more than laws the audit names alone (0.11-0.33 dB
+// on 49514, 49547, 49558): that miss is the audit's, whose decays in a room are read off each mode and
+// the room's answer to it together.
+TEST(AuditRoomOracle, AWeakLawBesideARoomIsInvisibleEvenToTheTruthAStrongOneIsNot) {
+  const struct {
+    std::uint64_t seed;
+    double law, room;
+  } cases[] = {{49521, 0.024625923440716051, 0.58894586418053396}, {49620, 0.81892822680349731, 0.23820019670587922}};
+  // Generated one after the other, then held to the truth side by side (each takes tens of seconds).
+  std::vector<indep::IndependentCase> generated;
+  std::vector<audit::AuditData> data;
+  for (const auto& k : cases) {
+    generated.push_back(indep::generate_independent_case(k.seed, {"damping_law", "reverberation"}, {k.law, k.room}));
+    data.push_back(audit::make_audit_data(generated.back().recordings));
+  }
+  std::future<LawGain> done[2];
+  for (std::size_t i = 0; i < 2; ++i)
+    done[i] = std::async(std::launch::async, [&, i] {
+      const ms::Room truth = true_room(generated[i]);
+      return law_gain(generated[i], data[i], &truth);
+    });
+  double gain_db[2];
+  for (std::size_t i = 0; i < 2; ++i) {
+    const LawGain g = done[i].get();
+    gain_db[i] = g.gain_db();
+    std::printf("%s\n  true modes in the true room: %.3f dB, on the nearest Rayleigh law %.3f dB\n",
+                generated[i].summary.c_str(), g.with_law.amplitudes_read_db, g.on_rayleigh.amplitudes_read_db);
+  }
+  EXPECT_LT(gain_db[0], 0.05);  // damping_law's penalty
+  EXPECT_GT(gain_db[1], 0.5);
+}
+
 // One case of the independent generator held to its truth (disabled; --gtest_also_run_disabled_tests):
 // ORACLE_SEED=S ORACLE_EFFECTS=a,b ORACLE_STRENGTHS=u,v (all digits, as the held-out runs print them).
 // A noise floor the audit named is added to the true modes too.
 TEST(AuditRoomOracle, DISABLED_Case) {
-  std::vector<std::string> effects;
-  std::vector<double> strengths;
-  env_case("ORACLE", effects, strengths);
-  const char* seed = std::getenv("ORACLE_SEED");
-  ASSERT_NE(seed, nullptr) << "set ORACLE_SEED";
-  const indep::IndependentCase c = indep::generate_independent_case(std::stoull(seed), effects, strengths);
+  const indep::IndependentCase c = oracle_case();
   ASSERT_TRUE(c.has_room) << "the case hides no room";
   const audit::AuditData data = audit::make_audit_data(c.recordings);
   const audit::AuditResult r = audit::run_audit(data);
@@ -202,6 +304,22 @@ TEST(AuditRoomOracle, DISABLED_Case) {
               r.final_model.modes.size(), audit_modes_in(data, r.final_model, truth),
               audit_modes_in(data, r.final_model, truth, true));
   EXPECT_GT(fair_dry.amplitudes_read_db, 0.0);
+}
+
+// How much a hidden damping law shows in the gap when everything else is true (disabled;
+// --gtest_also_run_disabled_tests): ORACLE_SEED=S ORACLE_EFFECTS=a,b ORACLE_STRENGTHS=u,v. The true
+// modes without their jitter, each amplitude read, with their true decays and with the nearest
+// Rayleigh law's (each strike's hand damping kept), in the true room where the case hides one.
+TEST(AuditRoomOracle, DISABLED_LawCase) {
+  const indep::IndependentCase c = oracle_case();
+  const audit::AuditData data = audit::make_audit_data(c.recordings);
+  const ms::Room truth = c.has_room ? true_room(c) : ms::Room{};
+  const LawGain g = law_gain(c, data, c.has_room ? &truth : nullptr);
+  std::printf("%s\n  true modes without their jitter%s: true decays %.3f dB, nearest Rayleigh law %.3f dB: the law "
+              "gains %.3f dB (level only %.3f dB)\n", c.summary.c_str(), c.has_room ? ", in the true room" : "",
+              g.with_law.amplitudes_read_db, g.on_rayleigh.amplitudes_read_db, g.gain_db(),
+              g.on_rayleigh.level_only_db - g.with_law.level_only_db);
+  EXPECT_GT(g.with_law.amplitudes_read_db, 0.0);
 }
 
 }  // namespace
