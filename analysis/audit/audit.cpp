@@ -91,8 +91,8 @@ void place_shapes(const ObjectShapes& shapes, const ModalModel& given, const std
   }
 }
 
-// What the training strikes share is read from three at least: from one or two it is their own values
-// (two strikes of a bell, one free and one muted, would name nothing).
+// What the training strikes share is read from three of them at least (four strikes, one held out): from
+// one or two it is their own values (two strikes of a bell, one free and one muted, would name nothing).
 constexpr std::size_t kMinStrikesForRival = 4;
 
 // Whether a candidate's held-out gap is not above its strike-free rival's (the same extension, every
