@@ -54,9 +54,9 @@ constexpr double kBuriedDb = 30.0, kStrongerDb = 6.0, kFarFromLaw = 6.0, kBelowL
 // The room is fitted on the loudest training strikes (most of its tail above the gap's floor), at
 // least kMinRoomStrikes of them.
 constexpr std::size_t kFitStrikes = 4, kMinRoomStrikes = 3;
-// The strong first guess of a room (mid-band RT60 and DRR of a reverberant lab), tried where the
-// grid's guess has a DRR above kWeakGuessDrrDb.
-constexpr double kStrongGuessRt60S = 0.6, kStrongGuessDrrDb = 0.0, kWeakGuessDrrDb = 6.0;
+// The strong first guess of a room (mid-band RT60 and DRR of a reverberant lab), tried beside the
+// grid's guess in every room: a grid guess that is already strong can still lead the fit astray.
+constexpr double kStrongGuessRt60S = 0.6, kStrongGuessDrrDb = 0.0;
 
 // Median over the strikes of a track's decay and energy (amp^2 / 4d, per unit strike gain, dB).
 struct TrackLevel {
@@ -197,12 +197,13 @@ std::vector<RoomCandidate> from_strong_guess(const AuditData& data, const AuditM
 }
 
 // The model in a room: the tracks the room made dropped (those the rule above names), then the room
-// fitted from the coarse grid's room as first guess. Where that is weak, also from a strong guess
-// (with the measured amplitudes, which hold each mode's reverberation, the grid can prefer a weak room
-// to the true strong one: the amplitudes must be read again in the strong room before it fits better),
-// and the fit, which scores rooms without their answer to each mode, can then still leave a strong
-// room for a short or weak one; so the strong guess itself, and the room fitted again from it with
-// its answers in place, are candidates too, and the one with the lowest answered gap is kept.
+// fitted from the coarse grid's room as first guess and from a strong guess. With the measured
+// amplitudes, which hold each mode's reverberation, the grid can prefer a weak room to the true strong
+// one (the amplitudes must be read again in the strong room before it fits better), and even a strong
+// grid guess can lead the fit to a room whose RT60 rises with frequency. The fit, which scores rooms
+// without their answer to each mode, can also leave a strong room for a short or weak one; so the
+// strong guess itself, and the room fitted again from it with its answers in place, are candidates
+// too, and the one with the lowest answered gap is kept.
 AuditModel with_room(const AuditData& data, AuditModel roomed, const std::vector<std::size_t>& strikes,
                      double* grid_cv_gap_db) {
   drop_modes(data, roomed, room_made(data, roomed, strikes).made, strikes);
@@ -212,12 +213,6 @@ AuditModel with_room(const AuditData& data, AuditModel roomed, const std::vector
     const RoomFit fit = fit_room(data, at_grid, strikes, false, &grid);
     return std::pair{std::move(at_grid), fit};
   };
-  if (grid.drr_db <= kWeakGuessDrrDb) {
-    auto [at_grid, fit] = from_grid();
-    *grid_cv_gap_db = fit.grid_cv_gap_db;
-    at_grid.room = fit.room;
-    return at_grid;
-  }
   // The two guesses are read and fitted apart, side by side; ties go to the grid's room.
   std::optional<RoomCandidate> at_grid;
   std::vector<RoomCandidate> at_strong;

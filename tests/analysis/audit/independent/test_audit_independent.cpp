@@ -457,9 +457,10 @@ TEST(AuditIndependent, TheRoomsAnswerToEachModeIsReadInTheFittedRoom) {
 // In a room the extraction reads each mode's decay off the mode and the room's answer to it, and decays
 // per mode taken from those readings lower the held-out gap with nothing that differs from strike to
 // strike. Hand damping is named only where the strikes' own excesses do better than each mode's excess
-// shared by every strike: after the rooms alone of tuning seeds 42874 and 42914 it was named (0.45 and
-// 0.47 dB held out) where the shared excess left a gap 0.11 and 0.54 dB lower; the hand hidden beside the
-// room of 42952 leaves a gap 0.62 dB lower than its rival and is named.
+// shared by every strike: after the room alone of tuning seed 42874 it was named (0.45 dB held out)
+// where the shared excess left a gap 0.11 dB lower; after the room of 42914 it once gained 0.47 dB, and
+// with that room also fitted from the strong guess it gains nothing held out; the hand hidden beside
+// the room of 42952 leaves a gap 0.62 dB lower than its rival and is named.
 TEST(AuditIndependent, HandDampingInARoomGainsByWhatDiffersFromStrikeToStrike) {
   const struct {
     std::uint64_t seed;
@@ -477,7 +478,9 @@ TEST(AuditIndependent, HandDampingInARoomGainsByWhatDiffersFromStrikeToStrike) {
     const auto hand = std::ranges::find(r.rounds[1], std::string("support_damping"), &audit::Candidate::effect);
     ASSERT_NE(hand, r.rounds[1].end()) << k.seed;
     std::printf("%llu: %s\n", static_cast<unsigned long long>(k.seed), hand->note.c_str());
-    EXPECT_NE(hand->note.find("with what the strikes share alone"), std::string::npos) << k.seed;
+    // Wherever the hand gains held out, its note holds it to the rival.
+    if (k.hand_hidden || (hand->detector_passes && hand->improvement_db > 0.0))
+      EXPECT_NE(hand->note.find("with what the strikes share alone"), std::string::npos) << k.seed;
     const bool named = std::ranges::count(r.named, std::string("support_damping"), &audit::NamedEffect::effect) > 0;
     EXPECT_EQ(named, k.hand_hidden) << k.seed;
   }
