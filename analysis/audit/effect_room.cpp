@@ -208,17 +208,13 @@ AuditModel with_room(const AuditData& data, AuditModel roomed, const std::vector
                      double* grid_cv_gap_db) {
   drop_modes(data, roomed, room_made(data, roomed, strikes).made, strikes);
   const Room grid = fit_room(data, roomed, strikes, true).room;
-  const auto from_grid = [&] {
-    AuditModel at_grid = read_in_guess(data, roomed, grid, strikes);
-    const RoomFit fit = fit_room(data, at_grid, strikes, false, &grid);
-    return std::pair{std::move(at_grid), fit};
-  };
   // The two guesses are read and fitted apart, side by side; ties go to the grid's room.
   std::optional<RoomCandidate> at_grid;
   std::vector<RoomCandidate> at_strong;
   parallel_indices(2, [&](std::size_t k) {
     if (k == 0) {
-      auto [model, fit] = from_grid();
+      AuditModel model = read_in_guess(data, roomed, grid, strikes);
+      const RoomFit fit = fit_room(data, model, strikes, false, &grid);
       at_grid = answered(data, std::move(model), fit.room, fit, strikes);
     } else {
       at_strong = from_strong_guess(data, roomed, strikes);
