@@ -140,9 +140,9 @@ struct Verdict {
   bool told() const { return improvement_db >= kMinImprovementDb && improvement_db > top_shuffled_db; }
 };
 
-Verdict judge_case(std::uint64_t seed, double strength, std::size_t max_modes, std::vector<std::string> effects = {"hit_position"},
-                   std::vector<double> strengths = {}) {
-  if (strengths.empty() && !effects.empty()) strengths = {strength};
+// The case of `seed` hiding `effects` at `strengths` (none: jitter alone), judged on its true amplitudes.
+Verdict judge_case(std::uint64_t seed, const std::vector<std::string>& effects, const std::vector<double>& strengths,
+                   std::size_t max_modes) {
   const indep::IndependentCase c = indep::generate_independent_case(seed, effects, strengths);
   // The strongest max_modes modes at the reference point (the audit reads the modes it tracked).
   const auto reference = [&](std::size_t n) {
@@ -178,7 +178,9 @@ Verdict judge_case(std::uint64_t seed, double strength, std::size_t max_modes, s
     }
     projector = basis * basis.completeOrthogonalDecomposition().pseudoInverse();
   }
-  const auto taken_out = [&](const Eigen::MatrixXd& m) -> Eigen::MatrixXd { return tilt ? Eigen::MatrixXd(m - m * projector.transpose()) : m; };
+  const auto taken_out = [&](const Eigen::MatrixXd& m) -> Eigen::MatrixXd {
+    return tilt ? Eigen::MatrixXd(m - m * projector.transpose()) : m;
+  };
   Verdict v;
   v.strikes = c.strikes.size();
   v.jitter_db = c.jitter_db;
@@ -205,7 +207,8 @@ std::size_t env_count(const char* name, std::size_t fallback) {
 
 void print_case(std::uint64_t seed, const Verdict& v) {
   std::printf("case %llu: %zu strikes, jitter %.2f dB, pattern %.2f dB better than a gain alone, shuffled at most %.2f: %s\n",
-              (unsigned long long)seed, v.strikes, v.jitter_db, v.improvement_db, v.top_shuffled_db, v.told() ? "told" : "not told");
+              (unsigned long long)seed, v.strikes, v.jitter_db, v.improvement_db, v.top_shuffled_db,
+              v.told() ? "told" : "not told");
 }
 
 // By strikes: 6, 7-8, 9-10 (a held-out strike learns its pattern from the others).
@@ -236,7 +239,7 @@ TEST(AuditIndependent, DISABLED_HitPatternCeiling) {
   int all_told = 0, all = 0;
   for (std::size_t i = 0; i < strengths.size(); ++i)
     for (std::size_t k = 0; k < per_strength; ++k, ++seed) {
-      const Verdict v = judge_case(seed, strengths[i], max_modes);
+      const Verdict v = judge_case(seed, {"hit_position"}, {strengths[i]}, max_modes);
       if (std::getenv("HIT_CEILING_PRINT")) print_case(seed, v);
       const std::size_t j = v.jitter_db < jitter_edges[1] ? 0 : v.jitter_db < jitter_edges[2] ? 1 : 2;
       ++seen[i][j];
@@ -268,7 +271,7 @@ TEST(AuditIndependent, DISABLED_HitPatternCeilingWithoutHitPoints) {
   int told = 0;
   double largest_db = -INFINITY;
   for (std::uint64_t seed = 90000; seed < 90000 + cases; ++seed) {
-    const Verdict v = judge_case(seed, 0.0, max_modes, {}, {});
+    const Verdict v = judge_case(seed, {}, {}, max_modes);
     if (std::getenv("HIT_CEILING_PRINT")) print_case(seed, v);
     told += v.told();
     largest_db = std::max(largest_db, v.improvement_db);
@@ -294,7 +297,7 @@ TEST(AuditIndependent, DISABLED_HitPatternCeilingOfHeldOutRun) {
       const std::uint64_t seed = f + 110 * half + i;
       const CasePlan plan = plan_case(seed, i, false, indep::independent_effects());
       if (std::ranges::find(plan.effects, std::string("hit_position")) == plan.effects.end()) continue;
-      const Verdict v = judge_case(seed, 0.0, max_modes, plan.effects, plan.strengths);
+      const Verdict v = judge_case(seed, plan.effects, plan.strengths, max_modes);
       print_case(seed, v);
       by_strikes.add(v);
       told += v.told();
