@@ -215,8 +215,8 @@ TEST(AuditRoom, CrossValidationChoosesTheRoomOrTheAdditiveTail) {
 }
 
 // model.yaml carries effects.room (RT60 per octave band, DRR, a seed) and the dry modes; it reads back
-// to the same recipe, and `modalstudy synth`'s rendering, averaged over 8 rooms, is the model's
-// prediction within 1 dB at both resolutions.
+// to the same recipe, and `modalstudy synth`'s rendering, averaged over 24 rooms, is the model's
+// prediction in the expected room within 1 dB at both resolutions.
 TEST(AuditRoom, TheRoomRendersFromYaml) {
   const HiddenCase hc = generate_hidden_case(1018, {"reverberation"}, {0.3});
   const AuditData data = make_audit_data(hc.recordings);
@@ -234,13 +234,18 @@ TEST(AuditRoom, TheRoomRendersFromYaml) {
   for (std::size_t b = 0; b < kRoomBands; ++b) EXPECT_NEAR(recipe.room.rt60_s[b], m.room.rt60_s[b], 1e-9 * m.room.rt60_s[b]);
   EXPECT_NEAR(recipe.room.drr_db, m.room.drr_db, 1e-9);
   const std::size_t s = representative_strike(m);
-  constexpr int kRooms = 8;
+  // Two means of 8 rooms differed by 1.1-1.4 dB on this room (RT60 0.35 s, DRR 0.3 dB), of 24 by 0.6.
+  constexpr int kRooms = 24;
   const Spectra rendered = mean_spectra(kRooms, [&](int k) {
     ParamSetRecipe drawn = recipe;
     drawn.room.seed = 100 + std::uint64_t(k);
     return bark_spectra(render_stimulus(resolve(drawn)).audio.samples, data.measured.grids);
   });
-  const Spectra predicted = predict_spectra(m, data, s);
+  // A seed draws a room, not the recorded one: each mode's answer read from the recordings is that
+  // room's draw, and over drawn rooms it averages to 1 (the expected room).
+  AuditModel expected = m;
+  for (AuditMode& mode : expected.modes) mode.room_answer = 1.0;
+  const Spectra predicted = predict_spectra(expected, data, s);
   for (std::size_t c = 0; c < kResolutions; ++c) {
     const GapSum g = gap_sum(predicted[c], rendered[c]);
     std::printf("resolution %zu: rendered (mean of %d rooms) vs predicted %.2f dB\n", c, kRooms, g.sum_db / double(g.cells));
