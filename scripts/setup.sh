@@ -14,7 +14,8 @@ packages=(build-essential cmake ninja-build pkg-config
           hydrogen-drumkits  # real struck-metal recordings for the model-audit tests (~140 MB)
           libqt6opengl6-dev  # Qt6Charts' CMake config needs Qt6OpenGL; Debian 12 does not pull it in
           clang libclang-rt-dev  # scripts/fuzz.sh: libFuzzer and the sanitizers' runtimes
-          chromium nodejs)  # the real-browser test of `modalstudy serve` (tests/web)
+          chromium nodejs  # the real-browser test of `modalstudy serve` (tests/web)
+          python3)  # the test scripts' helpers: a free port for PostgreSQL, the Sterling 2019 derivation
 # Debian's npm, unless the installed nodejs brings its own npm (as some nodejs builds do).
 command -v npm >/dev/null 2>&1 || packages+=(npm)
 missing=()

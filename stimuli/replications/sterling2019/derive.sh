@@ -22,7 +22,8 @@
 # object varied hit point and support.
 #
 # Every fit goes to derived/fits.csv (cell, dataset emg-constant | emg-relative | ray, law, alpha1, alpha2,
-# alpha3, the estimate's gamma); protocols/sterling2019.yaml repeats the chosen ones (a test checks).
+# alpha3, the estimate's gamma); protocols/sterling2019.yaml repeats the chosen ones (a test checks):
+# when every cell is derived into derived/, set_protocol_laws.py writes them into its emg and ray sets.
 # Deterministic: re-running gives the same files (tests/cli/test_sterling2019_derivation.cpp re-derives
 # two cells and compares bytes).
 # Usage (from the repository, after the build):
@@ -138,3 +139,7 @@ for cell in disc-wood disc-plastic disc-glass disc-porcelain rod-metal rod-plast
 done
 cp "$WORK/fits.csv" "$OUT/fits.csv"
 cp "$WORK/emg-choice.csv" "$OUT/emg-choice.csv"
+# The protocol plays the committed fits, so it follows them only when all of them were derived again.
+if [[ ${#CELLS[@]} -eq 0 && $(realpath "$OUT") == $(realpath "$HERE/derived") ]]; then
+  python3 "$HERE/set_protocol_laws.py" "$OUT" protocols/sterling2019.yaml >/dev/null
+fi
