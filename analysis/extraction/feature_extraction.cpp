@@ -446,10 +446,16 @@ ExtractedFeatures extract_features(const std::vector<float>& samples, double fs,
   // Error bars at the fitted values, before the amplitudes move to the onset (the bound does that).
   const std::vector<ModePrecision> precision =
       mode_precision(fit.comps, fit.signal.size(), fs, fit.sigma, double(skip));
+  // The same bound at the onset: a fast component fitted after a long skip and carried back to the
+  // onset can start orders of magnitude above anything recorded (e^(d skip)); its amplitude there
+  // is not measured, and it is no mode.
+  double recorded_peak = 0.0;
+  for (std::size_t n = onset; n < x.size(); ++n) recorded_peak = std::max(recorded_peak, std::abs(double(x[n])));
   std::vector<std::pair<Mode, ModePrecision>> found;
   for (std::size_t k = 0; k < fit.comps.size(); ++k) {
     DampedComponent& c = fit.comps[k];
     c.b *= std::exp(-c.s * double(skip));  // amplitude at the onset, not at the end of the contact
+    if (overshoots(c, recorded_peak)) continue;
     Mode m;
     m.freq_hz = c.s.imag() * fs / kTwoPi;
     m.decay_per_s = -c.s.real() * fs;
