@@ -47,6 +47,22 @@ TEST(Sterling2019Derivation, RederivingTwoCellsGivesTheCommittedFiles) {
   }
 }
 
+// Some cells derived over the committed files would leave fits.csv without the others' rows.
+TEST(Sterling2019Derivation, SomeCellsAreNotDerivedOverTheCommittedFiles) {
+  const std::string source = MODALSTUDY_SOURCE_DIR, derived = source + "/stimuli/replications/sterling2019/derived/";
+  const std::string fits = slurp(derived + "fits.csv");
+  const ms::test::TempDir dir;
+  const std::string cmd = "cd '" + source + "' && bash stimuli/replications/sterling2019/derive.sh '" +
+                          std::string(MODALSTUDY_BIN) + "' stimuli/replications/sterling2019/derived/ rod-wood >'" +
+                          dir.file("log") + "' 2>&1";
+  const int status = std::system(cmd.c_str());
+  EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 2);
+  const std::string log = slurp(dir.file("log"));
+  EXPECT_EQ(std::count(log.begin(), log.end(), '\n'), 1) << log;
+  EXPECT_NE(log.find("would drop the other cells' fits"), std::string::npos) << log;
+  EXPECT_EQ(slurp(derived + "fits.csv"), fits);
+}
+
 // set_protocol_laws.py is how derive.sh puts the fits into the protocol: it rewrites only the damping
 // maps of the emg and ray stimuli, so a protocol whose laws drifted comes back byte for byte.
 struct Script {

@@ -27,7 +27,8 @@
 # Deterministic: re-running gives the same files (tests/cli/test_sterling2019_derivation.cpp re-derives
 # two cells and compares bytes).
 # Usage (from the repository, after the build):
-#   stimuli/replications/sterling2019/derive.sh [MODALSTUDY [OUT_DIR [CELL...]]]   (default: all cells)
+#   stimuli/replications/sterling2019/derive.sh [MODALSTUDY [OUT_DIR [CELL...]]]   (default: all cells;
+#   some cells only into an OUT_DIR other than derived/)
 set -euo pipefail
 M=${1:-build/bin/modalstudy}
 HERE=stimuli/replications/sterling2019
@@ -35,10 +36,16 @@ REC=protocols/audio/hydrogen-drumkits
 OUT=${2:-$HERE/derived}
 CELLS=("${@:3}")
 wanted() { [[ ${#CELLS[@]} -eq 0 || " ${CELLS[*]} " == *" $1 "* ]]; }
+mkdir -p "$OUT"
+# fits.csv holds the cells derived in one run: some cells written over the committed files would drop
+# the other cells' rows, which the protocol plays.
+if [[ ${#CELLS[@]} -gt 0 && $(realpath "$OUT") == $(realpath "$HERE/derived") ]]; then
+  echo "derive.sh: deriving only ${CELLS[*]} into $HERE/derived would drop the other cells' fits; derive every cell there, or these into another folder" >&2
+  exit 2
+fi
 WORK=$(mktemp -d)   # the strikes and fits (removed at the end)
 [[ -n ${KEEP:-} ]] || trap 'rm -rf "$WORK"' EXIT   # KEEP=1 keeps them (the path is printed)
 [[ -n ${KEEP:-} ]] && echo "work files: $WORK" >&2
-mkdir -p "$OUT"
 
 fits_row() {  # cell dataset json-file law
   python3 - "$@" <<'PY'
