@@ -73,8 +73,9 @@ TEST(AuditHidden, DISABLED_AuditTuning) {
 // one (5000-5119, 7000-7159, 8000-8159, 9000-9159, 10000-10239, 11000-11239 and 12000-12239 held out
 // earlier versions and are not reused). AUDIT_HELDOUT_FIRST runs the same protocol on another range
 // (to check a change on seeds nobody has looked at; 14000-14239, 15000-15239, 15240-15479,
-// 15480-15719, 15720-15959, 15960-16199, 16200-16439, 16440-16679, 16680-16919, 16920-17159 and
-// 17160-17399 have been: on 15240-15479, hit_position 20/26, under even this test's floor for it).
+// 15480-15719, 15720-15959, 15960-16199, 16200-16439, 16440-16679, 16680-16919, 16920-17159,
+// 17160-17399 and 17400-17639 have been: on 15240-15479, hit_position 20/26, under even this test's
+// floor for it).
 TEST(AuditHidden, HeldOutSeedsMeetTheBarsExceptHitPosition) {
   Tally tally;
   const auto t0 = std::chrono::steady_clock::now();
