@@ -37,9 +37,10 @@ OUT=${2:-$HERE/derived}
 CELLS=("${@:3}")
 wanted() { [[ ${#CELLS[@]} -eq 0 || " ${CELLS[*]} " == *" $1 "* ]]; }
 mkdir -p "$OUT"
+INTO_COMMITTED=; [[ $(realpath "$OUT") == $(realpath "$HERE/derived") ]] && INTO_COMMITTED=1
 # fits.csv holds the cells derived in one run: some cells written over the committed files would drop
 # the other cells' rows, which the protocol plays.
-if [[ ${#CELLS[@]} -gt 0 && $(realpath "$OUT") == $(realpath "$HERE/derived") ]]; then
+if [[ ${#CELLS[@]} -gt 0 && -n $INTO_COMMITTED ]]; then
   echo "derive.sh: deriving only ${CELLS[*]} into $HERE/derived would drop the other cells' fits; derive every cell there, or these into another folder" >&2
   exit 2
 fi
@@ -147,6 +148,6 @@ done
 cp "$WORK/fits.csv" "$OUT/fits.csv"
 cp "$WORK/emg-choice.csv" "$OUT/emg-choice.csv"
 # The protocol plays the committed fits, so it follows them only when all of them were derived again.
-if [[ ${#CELLS[@]} -eq 0 && $(realpath "$OUT") == $(realpath "$HERE/derived") ]]; then
+if [[ ${#CELLS[@]} -eq 0 && -n $INTO_COMMITTED ]]; then
   python3 "$HERE/set_protocol_laws.py" "$OUT" protocols/sterling2019.yaml >/dev/null
 fi

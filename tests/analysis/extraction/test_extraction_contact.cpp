@@ -48,7 +48,7 @@ TEST(ExtractionContact, ShippedBarStrikesGiveBackTheirModes) {
 // elsewhere, as derive.sh renders it): the fit restarts after the attack noise, up to 20 ms late, and
 // carries every amplitude back to the onset. A fast component fitted that late would start there at
 // e^(d skip) times its fitted amplitude (up to 1860 times the recording's peak on these strikes, at
-// 600-1750 1/s), which no mode of a recorded strike does; none may come back.
+// 290-1750 1/s), which no mode of a recorded strike does; none may come back.
 TEST(ExtractionContact, NoModeStartsAboveTheRecordingAfterALateRestart) {
   const std::string set = std::string(MODALSTUDY_SOURCE_DIR) + "/stimuli/replications/sterling2019/standins/disc-plastic.yaml";
   const std::vector<std::vector<std::string>> strikes = {
