@@ -8,7 +8,9 @@
 // a hit position per strike; without, a low-rank pattern (loadings per mode fitted on the training
 // strikes, rank chosen by the same bi-cross-validation, a weight per strike its latent value), or, where
 // it predicts better, a path through the training strikes' own patterns (a strike placed on or between
-// two of them: the hit point moves along a line, and shapes that bend between strikes are no low rank).
+// two of them: the hit point moves along a line, and shapes that bend between strikes are no low rank),
+// or a bending-wave line learnt from the strikes (bending_line.hpp: one coordinate per strike places
+// every mode, its shape's wavenumber growing as the square root of its frequency).
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
@@ -19,6 +21,7 @@
 #include <string>
 
 #include "analysis/audit/baseline_fit.hpp"
+#include "analysis/audit/bending_line.hpp"
 #include "analysis/audit/contact_spectrum.hpp"
 #include "analysis/audit/effect_catalog.hpp"
 
@@ -39,6 +42,11 @@ constexpr double kMaxResidualLn = 1.5;
 
 // No hit pattern: every strike's modes at the set's amplitudes (the object's grid, if any, stays).
 void clear_pattern(HitPattern& hit) {
+  if (hit.learnt_line) {
+    hit.positions.clear();
+    hit.shape_ln.clear();
+    hit.learnt_line = false;
+  }
   hit.on_path = false;
   hit.loading.clear();
   hit.coord.clear();
@@ -49,6 +57,7 @@ void clear_pattern(HitPattern& hit) {
 // rows strikes, columns the modes present in all of them and within kWithinDb of the strongest.
 struct Residuals {
   std::vector<std::size_t> strikes, modes;
+  std::vector<double> freq_hz;  // per column
   Eigen::MatrixXd ln;
 };
 
@@ -71,7 +80,10 @@ Residuals residuals(const AuditData& data, const AuditModel& model, const std::v
       all &= o.present && o.amp > 0.0;
       loudest = std::max(loudest, o.amp);
     }
-    if (all && 20.0 * std::log10(loudest / strongest) >= -kWithinDb) r.modes.push_back(n);
+    if (all && 20.0 * std::log10(loudest / strongest) >= -kWithinDb) {
+      r.modes.push_back(n);
+      r.freq_hz.push_back(m.freq_hz);
+    }
   }
   r.ln.resize(Eigen::Index(strikes.size()), Eigen::Index(r.modes.size()));
   for (std::size_t i = 0; i < strikes.size(); ++i)
@@ -272,25 +284,51 @@ double held_out_half_mse_path(const Eigen::MatrixXd& ln) {
   return count ? sse / double(count) : 0.0;
 }
 
+// A gain alone, chosen as a strike is placed on a path or a line (median, so a mode near a node does not
+// pull it), the training strikes' mean per mode as the shape.
+double held_out_half_mse_robust_gain(const Eigen::MatrixXd& ln) {
+  double sse = 0.0;
+  std::size_t count = 0;
+  for (Eigen::Index k = 0; k < ln.rows(); ++k) {
+    const Eigen::VectorXd x = (ln.row(k) - without_row(ln, k).colwise().mean()).transpose();
+    add_placed_half_errors(x, Eigen::MatrixXd(0, ln.cols()), sse, count);
+  }
+  return count ? sse / double(count) : 0.0;
+}
+
+// A held-out strike placed on a bending-wave line learnt from the other strikes (bi-cross-validation as above).
+double held_out_half_mse_line(const Eigen::MatrixXd& ln, const std::vector<double>& freq_hz) {
+  double sse = 0.0;
+  std::size_t count = 0;
+  for (Eigen::Index k = 0; k < ln.rows(); ++k)
+    add_placed_half_errors(ln.row(k).transpose(), fit_bending_line(without_row(ln, k), freq_hz).shapes(), sse, count);
+  return count ? sse / double(count) : 0.0;
+}
+
 struct PatternChoice {
   std::size_t rank = 0;  // low-rank patterns
   bool path = false;     // a path through the strikes instead
+  bool line = false;     // a bending-wave line instead
   double gain_only_rms = 0.0, pattern_rms = 0.0;  // held-out-half RMS, natural-log units
-  bool found() const { return path || rank > 0; }
+  bool found() const { return path || line || rank > 0; }
 };
 
 // The rank with the smallest held-out-half error (0: a gain alone), up to what the strikes and modes
-// allow, or the path through the strikes where it predicts better still.
+// allow, or the path through the strikes or a bending-wave line where either predicts better still.
 constexpr Eigen::Index kMinPathStrikes = 4;  // a held-out strike placed among three others at least
-PatternChoice choose_pattern(const Eigen::MatrixXd& ln) {
+PatternChoice choose_pattern(const Eigen::MatrixXd& ln, const std::vector<double>& freq_hz) {
   PatternChoice c;
-  c.gain_only_rms = c.pattern_rms = std::sqrt(held_out_half_mse(ln, 0));
+  // A pattern must beat a gain alone however the gain is chosen: least squares (as the ranks fit it) or
+  // the median (as the path and the line place a strike, robust to a mode near a node).
+  c.gain_only_rms = c.pattern_rms = std::sqrt(std::min(held_out_half_mse(ln, 0), held_out_half_mse_robust_gain(ln)));
   const std::size_t most = std::min({kMaxRank, std::size_t(std::max<Eigen::Index>(ln.rows() - 2, 0)),
                                      std::size_t(std::max<Eigen::Index>(ln.cols() / 2 - 2, 0))});
   for (std::size_t r = 1; r <= most; ++r)
-    if (const double rms = std::sqrt(held_out_half_mse(ln, r)); rms < c.pattern_rms) c = {r, false, c.gain_only_rms, rms};
-  if (ln.rows() >= kMinPathStrikes)
-    if (const double rms = std::sqrt(held_out_half_mse_path(ln)); rms < c.pattern_rms) c = {0, true, c.gain_only_rms, rms};
+    if (const double rms = std::sqrt(held_out_half_mse(ln, r)); rms < c.pattern_rms) c = {r, false, false, c.gain_only_rms, rms};
+  if (ln.rows() >= kMinPathStrikes) {
+    if (const double rms = std::sqrt(held_out_half_mse_path(ln)); rms < c.pattern_rms) c = {0, true, false, c.gain_only_rms, rms};
+    if (const double rms = std::sqrt(held_out_half_mse_line(ln, freq_hz)); rms < c.pattern_rms) c = {0, false, true, c.gain_only_rms, rms};
+  }
   return c;
 }
 
@@ -300,7 +338,8 @@ PatternChoice choose_pattern(const Eigen::MatrixXd& ln) {
 // through the detector's own processing (`taken_out`: tilt and contact removed), so that what that
 // projection alone leaves predictable (few modes, many terms removed) is in the null too.
 constexpr int kShuffles = 39;  // a shared pattern beats all of them: p < 1/40 under independent scatter
-double scatter_improvement_db(const Eigen::MatrixXd& ln, const std::function<Eigen::MatrixXd(const Eigen::MatrixXd&)>& taken_out) {
+double scatter_improvement_db(const Eigen::MatrixXd& ln, const std::vector<double>& freq_hz,
+                              const std::function<Eigen::MatrixXd(const Eigen::MatrixXd&)>& taken_out) {
   const Eigen::MatrixXd centred = double_centred(ln);
   std::mt19937_64 rng(0x5ca77e4ULL);
   double most = 0.0;
@@ -312,7 +351,7 @@ double scatter_improvement_db(const Eigen::MatrixXd& ln, const std::function<Eig
       std::shuffle(row.begin(), row.end(), rng);
       for (Eigen::Index j = 0; j < shuffled.cols(); ++j) shuffled(s, j) = row[std::size_t(j)];
     }
-    const PatternChoice c = choose_pattern(taken_out(shuffled));
+    const PatternChoice c = choose_pattern(taken_out(shuffled), freq_hz);
     most = std::max(most, kDbPerNeper * (c.gain_only_rms - c.pattern_rms));
   }
   return most;
@@ -331,6 +370,22 @@ void refit_shapes_and_gains(const AuditData& data, AuditModel& model, const std:
   else for (std::size_t s : train) fit_gain(model, data, s);
 }
 
+// A bending-wave line learnt from the training strikes' residuals: its grid and shapes stand in for an
+// object's, each training strike at its fitted coordinate, the others at the line's middle until adapted.
+void learn_line(const AuditData& data, AuditModel& model, const std::vector<std::size_t>& train, const Residuals& r) {
+  const BendingLine line = fit_bending_line(r.ln, r.freq_hz);
+  const Eigen::MatrixXd shapes = line.shapes();
+  HitPattern& hit = model.hit;
+  hit.learnt_line = true;
+  hit.positions = line_grid_rad();
+  hit.home_position = hit.positions.size() / 2;
+  hit.shape_ln.assign(hit.positions.size(), std::vector<double>(model.modes.size(), 0.0));
+  for (std::size_t p = 0; p < hit.positions.size(); ++p)
+    for (std::size_t j = 0; j < r.modes.size(); ++j) hit.shape_ln[p][r.modes[j]] = shapes(Eigen::Index(p), Eigen::Index(j));
+  hit.strike_position.assign(data.strike_count(), hit.home_position);
+  for (std::size_t i = 0; i < train.size(); ++i) hit.strike_position[train[i]] = line.strike_at[i];
+}
+
 constexpr std::size_t kMinModes = 8;  // fewer: no pattern can be told from scatter
 
 void extend(const AuditData& data, AuditModel& model, const std::vector<std::size_t>& train) {
@@ -345,8 +400,13 @@ void extend(const AuditData& data, AuditModel& model, const std::vector<std::siz
     for (std::size_t i = 0; i < train.size(); ++i)
       model.hit.strike_position[train[i]] = std::size_t(place(r.ln.row(Eigen::Index(i)).transpose(), shapes, every).position);
   } else {
-    const PatternChoice c = choose_pattern(r.ln);
+    const PatternChoice c = choose_pattern(r.ln, r.freq_hz);
     if (!c.found()) return;
+    if (c.line) {
+      learn_line(data, model, train, r);
+      refit_shapes_and_gains(data, model, train);
+      return;
+    }
     const Eigen::MatrixXd centred = double_centred(r.ln);
     const Eigen::MatrixXd load = c.path ? Eigen::MatrixXd(r.ln.transpose()) : loadings(centred, c.rank);
     model.hit.on_path = c.path;
@@ -371,7 +431,7 @@ void adapt(const AuditData& data, AuditModel& model, std::size_t s) {
   const Eigen::VectorXd x = r.ln.row(0).transpose();
   std::vector<Eigen::Index> every(r.modes.size());
   for (std::size_t j = 0; j < every.size(); ++j) every[j] = Eigen::Index(j);
-  if (model.hit.from_object()) {
+  if (!model.hit.shape_ln.empty()) {  // an object's shapes or a learnt line
     model.hit.strike_position[s] = std::size_t(place(x, shapes_on(model, r.modes), every).position);
     return;
   }
@@ -401,31 +461,38 @@ Detection detect(const AuditData& data, const AuditModel& current) {
     c.pattern_rms = std::sqrt(held_out_half_mse_object(r.ln, shapes_on(current, r.modes)));
     c.rank = c.pattern_rms < c.gain_only_rms ? 1 : 0;
   } else {
-    c = choose_pattern(without_tilt(r.ln, current, r.modes, r.strikes));
+    c = choose_pattern(without_tilt(r.ln, current, r.modes, r.strikes), r.freq_hz);
   }
   d.statistic = kDbPerNeper * (c.gain_only_rms - c.pattern_rms);
-  const double null_db =
-      current.hit.from_object() ? 0.0
-                                : scatter_improvement_db(r.ln, [&](const Eigen::MatrixXd& ln) { return without_tilt(ln, current, r.modes, r.strikes); });
-  d.passes = c.found() && d.statistic >= kMinImprovementDb && d.statistic > null_db &&
-             data.strike_variation_db >= kMinStrikeVariationDb;
+  const bool beyond_bars = c.found() && d.statistic >= kMinImprovementDb && data.strike_variation_db >= kMinStrikeVariationDb;
+  // The shuffles cost forty pattern searches: run only where they decide.
+  const bool shuffled = beyond_bars && !current.hit.from_object();
+  const double null_db = shuffled ? scatter_improvement_db(r.ln, r.freq_hz, [&](const Eigen::MatrixXd& ln) {
+                                      return without_tilt(ln, current, r.modes, r.strikes);
+                                    })
+                                  : 0.0;
+  d.passes = beyond_bars && d.statistic > null_db;
   const std::string shared = current.hit.from_object() ? "in the pattern of the object's mode shapes at a moving hit point"
                              : c.path ? "and strikes that land near each other sound alike (a path through the other strikes' patterns)"
+                             : c.line ? "as a hit point moving along a line of bending-wave shapes (wavenumber as the square root of frequency) sets them"
                              : c.rank == 1 ? "in one pattern the strikes share"
                                            : "in " + std::to_string(c.rank) + " patterns the strikes share";
-  char buf[512];
+  char null_text[96];
+  if (shuffled) std::snprintf(null_text, sizeof null_text, "shuffled modes: at most %.2f dB better", null_db);
+  else std::snprintf(null_text, sizeof null_text, "%s", current.hit.from_object() ? "the shapes are given" : "shuffled modes not tried: under the bars");
+  char buf[640];
   if (c.found())
     std::snprintf(buf, sizeof buf,
                   "the modes' amplitudes change from strike to strike by more than a gain and a spectral tilt, %s: "
                   "fitted on half of a held-out strike's %zu modes it predicts the other half to %.2f dB RMS instead "
-                  "of %.2f dB with a gain alone (shuffled modes: at most %.2f dB better)",
-                  shared.c_str(), r.modes.size(), kDbPerNeper * c.pattern_rms, kDbPerNeper * c.gain_only_rms, null_db);
+                  "of %.2f dB with a gain alone (%s)",
+                  shared.c_str(), r.modes.size(), kDbPerNeper * c.pattern_rms, kDbPerNeper * c.gain_only_rms, null_text);
   else
     std::snprintf(buf, sizeof buf,
                   "%s predicts a held-out strike's modes better than a gain alone (fitted on half of its %zu modes, "
-                  "the other half to %.2f dB RMS; shuffled modes: at most %.2f dB better)",
+                  "the other half to %.2f dB RMS)",
                   current.hit.from_object() ? "no hit point on the object's mode shapes" : "no pattern the strikes share",
-                  r.modes.size(), kDbPerNeper * c.gain_only_rms, null_db);
+                  r.modes.size(), kDbPerNeper * c.gain_only_rms);
   d.evidence = buf;
   return d;
 }
@@ -449,6 +516,13 @@ Parameters parameters(const AuditData& data, const AuditModel& model) {
     }
     p.push_back({"position_min", lo});
     p.push_back({"position_max", hi});
+  } else if (model.hit.learnt_line) {
+    double lo = 1e9, hi = -1e9;
+    for (std::size_t i : model.hit.strike_position) {
+      lo = std::min(lo, model.hit.positions[i]);
+      hi = std::max(hi, model.hit.positions[i]);
+    }
+    p.push_back({"line_span_rad", hi - lo});
   } else {
     p.push_back({model.hit.on_path ? "path_strikes" : "rank", double(model.hit.rank())});
   }

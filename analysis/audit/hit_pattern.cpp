@@ -3,7 +3,7 @@
 namespace ms::audit {
 
 double HitPattern::log_factor(std::size_t s, std::size_t n) const {
-  if (from_object()) {
+  if (!shape_ln.empty()) {
     if (s >= strike_position.size()) return 0.0;
     const std::vector<double>& at = shape_ln[strike_position[s]];
     return n < at.size() ? at[n] : 0.0;

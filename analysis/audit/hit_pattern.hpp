@@ -5,7 +5,9 @@
 //  - a low-rank pattern (no geometry known): l[s][n] = sum_k coord[s][k] loading[n][k];
 //  - a path through the strikes (no geometry known, the hit point moving along a line the mode shapes
 //    bend): the same sum, its loadings the training strikes' own patterns and each strike's weights
-//    placing it on or between two of them (weights summing to 1).
+//    placing it on or between two of them (weights summing to 1);
+//  - a bending-wave line learnt from the strikes (bending_line.hpp): like an object's shapes, on the
+//    line's grid of coordinates.
 #pragma once
 #include <cstddef>
 #include <vector>
@@ -23,8 +25,9 @@ struct HitPattern {
   std::vector<std::vector<double>> shape_ln;  // [position][mode]
   std::vector<std::size_t> strike_position;   // per strike, index into positions
   std::size_t home_position = 0;              // the parameter set's own hit (its row is all 0)
+  bool learnt_line = false;  // positions and shape_ln learnt from the strikes, not given by an object
 
-  bool from_object() const { return !shape_ln.empty(); }
+  bool from_object() const { return !shape_ln.empty() && !learnt_line; }
   bool active() const { return !coord.empty() || !strike_position.empty(); }
   std::size_t rank() const { return loading.empty() ? 0 : loading.front().size(); }
   // l[s][n] (0 where the pattern says nothing about strike s or mode n).

@@ -53,27 +53,27 @@ TEST(AuditHitPosition, GeneratedHitPointsAreNamedAndCloseTheGapAboveTheFloor) {
   for (std::uint64_t seed : {41u, 42u, 43u}) EXPECT_FALSE(named_first_closing_half(seed, 0.6).empty());
 }
 
-// Hit points spread over a fifth of the length carry the upper modes past nodes between strikes: five
-// strikes then trace a bent path no low-rank pattern of four training strikes predicts (tuning seeds
-// where the low rank found nothing). A strike placed between the two others it sounds most like does.
-TEST(AuditHitPosition, HitPointsSweepingPastNodesAreNamedAsAPathThroughTheStrikes) {
+// Hit points spread over a fifth of the length carry the upper modes past nodes between strikes: no
+// low-rank pattern of four training strikes predicts a fifth (tuning seeds where the low rank found
+// nothing), and a path through the strikes only memorises them. One coordinate per strike on a line
+// whose shapes bend as bending waves do (wavenumber as the square root of frequency) places every mode
+// at once, so a strike the audit has not seen is predicted too: the held-out gap more than halves.
+TEST(AuditHitPosition, HitPointsSweepingPastNodesAreNamedAsABendingLine) {
   for (std::uint64_t seed : {1004u, 1019u, 1024u}) {
     const Parameters p = named_first_closing_half(seed, 0.9);
-    EXPECT_TRUE(std::any_of(p.begin(), p.end(), [](const auto& kv) { return kv.first == "path_strikes"; })) << seed;
+    EXPECT_TRUE(std::any_of(p.begin(), p.end(), [](const auto& kv) { return kv.first == "line_span_rad"; })) << seed;
   }
 }
 
-// A path memorises each training strike, so the in-sample gap says little; the per-strike held-out gap
-// the report draws is what a strike it has not seen keeps, and averages to the held-out gap.
-TEST(AuditHitPosition, APathsHeldOutGapPerStrikeIsReportedBesideItsInSampleOne) {
+// Each strike's held-out gap is reported beside the in-sample one, and averages to the held-out gap.
+TEST(AuditHitPosition, TheHeldOutGapPerStrikeIsReportedBesideTheInSampleOne) {
   const HiddenCase hc = generate_hidden_case(1004, {"hit_position"}, {0.9});
   const AuditResult r = run_audit(make_audit_data(hc.recordings));
   ASSERT_EQ(r.strike_cv_gap_after_db.size(), r.strikes);
   double sum = 0.0;
   for (double g : r.strike_cv_gap_after_db) sum += g;
   EXPECT_NEAR(sum / double(r.strikes), r.cv_gap_after_db, 1e-9);
-  EXPECT_LT(r.gap_after_db, 0.1);                         // in-sample: each strike its own pattern
-  EXPECT_GT(r.cv_gap_after_db, r.gap_after_db + 1.0);     // held out: the floor's share remains
+  EXPECT_LT(r.cv_gap_after_db, 0.5 * r.cv_gap_before_db);  // a strike not seen is placed on the line
 }
 
 // A strong contact fitted a little off leaves a pattern that follows the strike gains; taken out to
