@@ -26,8 +26,9 @@ constexpr double kNamedBar = 0.9, kQuietBar = 0.9, kGapShrinkBar = 0.9;
 // 14000-14239 (83 %), 23 of 26 on 15000-15239 (88 %). The misses alone are strikes that neither a
 // low-rank pattern nor a path through the other strikes predicts better than the shuffles' null
 // (13119: 0.67 dB against 0.83 dB);
-// the others sit beside an effect named first (a room, a damping law, a burst). This floor keeps what
-// holds from slipping; it is not the bar.
+// the others sit beside an effect named first (a room, a damping law, a burst). With the bending-wave
+// line among the patterns it met the bar on its first fresh range, 24 of 26 on 17640-17879 (92 %); one
+// range is not yet a rate. This floor keeps what holds from slipping; it is not the bar.
 constexpr double kHitPositionNamedFloor = 0.8;
 
 audit::AuditResult audit_case(const CasePlan& plan) {
@@ -50,7 +51,8 @@ void print_case(const CasePlan& plan, const audit::AuditResult& r) {
 }
 
 // Threshold tuning run (disabled: run with --gtest_also_run_disabled_tests): every statistic per case.
-// AUDIT_TUNING_FIRST / AUDIT_TUNING_COUNT pick the seeds (default 1000, 60; also used: 1100, 80 and 3000, 240);
+// AUDIT_TUNING_FIRST / AUDIT_TUNING_COUNT pick the seeds (default 1000, 60; also used: 1100, 80, 3000, 240
+// and 3240, 240);
 // AUDIT_TUNING_ONLY=effect hides that effect in every case, at strength 0.1 + 0.2 (seed mod 5).
 TEST(AuditHidden, DISABLED_AuditTuning) {
   Tally tally;
@@ -74,8 +76,8 @@ TEST(AuditHidden, DISABLED_AuditTuning) {
 // earlier versions and are not reused). AUDIT_HELDOUT_FIRST runs the same protocol on another range
 // (to check a change on seeds nobody has looked at; 14000-14239, 15000-15239, 15240-15479,
 // 15480-15719, 15720-15959, 15960-16199, 16200-16439, 16440-16679, 16680-16919, 16920-17159,
-// 17160-17399 and 17400-17639 have been: on 15240-15479, hit_position 20/26, under even this test's
-// floor for it).
+// 17160-17399, 17400-17639 and 17640-17879 have been: on 15240-15479, hit_position 20/26, under even
+// this test's floor for it).
 TEST(AuditHidden, HeldOutSeedsMeetTheBarsExceptHitPosition) {
   Tally tally;
   const auto t0 = std::chrono::steady_clock::now();
