@@ -6,6 +6,7 @@
 #include <limits>
 #include <numbers>
 #include <random>
+#include <stdexcept>
 
 namespace ms::audit {
 
@@ -39,7 +40,10 @@ constexpr int kIterations = 8;     // alternations of the phases and the strikes
 // centimetres on a bar a few decimetres long.
 constexpr double kStartSpreadRad[] = {0.1, 0.2, 0.35, 0.5, 0.7, 1.0};
 constexpr int kRandomStarts = 6;  // and strikes placed at random, for lines the first pattern misorders
-constexpr double kLowRatio = 2.5;  // the lower modes: wavenumber within 2.5 times the lowest's
+// The fit's stages: the modes of wavenumber up to these multiples of the lowest's, then all; the first
+// stage's modes also order the strikes for the starts.
+constexpr double kStageRatios[] = {2.5, 4.0, 7.0};
+constexpr std::size_t kMinStageModes = 3;
 
 std::size_t nearest_on_grid(double u_rad) {
   const std::vector<double>& grid = line_grid_rad();
@@ -125,8 +129,6 @@ double fit_from(const Eigen::MatrixXd& ln, BendingLine& line, std::vector<double
 // The fit from the strikes' starting coordinates in stages, the lower modes first: their shapes bend
 // little between strikes, so they place the strikes roughly without the many false minima of the upper
 // modes, each stage adding modes up to a higher wavenumber and refining where the strikes landed.
-constexpr double kStageRatios[] = {2.5, 4.0, 7.0};
-constexpr std::size_t kMinStageModes = 3;
 double fit_in_stages(const Eigen::MatrixXd& ln, BendingLine& line) {
   for (double most : kStageRatios) {
     std::vector<Eigen::Index> cols;
@@ -174,6 +176,7 @@ Eigen::MatrixXd BendingLine::shapes() const {
 BendingLine fit_bending_line(const Eigen::MatrixXd& ln, const std::vector<double>& freq_hz) {
   const Eigen::Index strikes = ln.rows(), modes = ln.cols();
   if (strikes == 0 || modes == 0) return {};
+  if (freq_hz.size() != std::size_t(modes)) throw std::invalid_argument("fit_bending_line: one frequency per column");
   BendingLine start;  // phases and offsets at zero; each start places the strikes its own way
   const double lowest = *std::min_element(freq_hz.begin(), freq_hz.end());
   for (double f : freq_hz) start.ratio.push_back(std::sqrt(f / lowest));
@@ -183,9 +186,11 @@ BendingLine fit_bending_line(const Eigen::MatrixXd& ln, const std::vector<double
   // orders them along the line.
   std::vector<Eigen::Index> low;
   for (Eigen::Index n = 0; n < modes; ++n)
-    if (start.ratio[std::size_t(n)] <= kLowRatio) low.push_back(n);
-  if (low.size() < 2)
+    if (start.ratio[std::size_t(n)] <= kStageRatios[0]) low.push_back(n);
+  if (low.size() < 2) {
+    low.clear();
     for (Eigen::Index n = 0; n < modes; ++n) low.push_back(n);
+  }
   Eigen::MatrixXd centred = ln(Eigen::all, low);
   centred = centred.rowwise() - centred.colwise().mean();
   centred = centred.colwise() - centred.rowwise().mean();

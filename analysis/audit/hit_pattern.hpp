@@ -21,6 +21,7 @@ struct HitPattern {
   bool on_path = false;  // the loadings are the training strikes' patterns; a strike sits between two
   // Object: the hit positions of the grid (fraction of the length or radius), the log amplitude of
   // every mode at each relative to the parameter set's own hit, and each strike's fitted position.
+  // A learnt line fills the same fields: its coordinates (radians of the lowest mode's shape) and shapes.
   std::vector<double> positions;
   std::vector<std::vector<double>> shape_ln;  // [position][mode]
   std::vector<std::size_t> strike_position;   // per strike, index into positions

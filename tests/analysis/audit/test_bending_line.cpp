@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 #include "analysis/audit/bending_line.hpp"
@@ -83,9 +84,10 @@ TEST(BendingLine, PredictsAStrikeItHasNotSeen) {
   EXPECT_GT(mean_of_others, 3.0 * on_line);
 }
 
-TEST(BendingLine, NoRowsOrNoModesLearnNothing) {
+TEST(BendingLine, NoRowsOrNoModesLearnNothingAndFrequenciesMustMatchTheColumns) {
   EXPECT_TRUE(fit_bending_line(Eigen::MatrixXd(0, 3), {100.0, 200.0, 300.0}).strike_at.empty());
   EXPECT_TRUE(fit_bending_line(Eigen::MatrixXd(3, 0), {}).strike_at.empty());
+  EXPECT_THROW(fit_bending_line(Eigen::MatrixXd::Zero(3, 3), {100.0, 200.0}), std::invalid_argument);
 }
 
 }  // namespace
