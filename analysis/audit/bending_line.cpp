@@ -79,10 +79,12 @@ double coarse_to_fine_min(double lo, double hi, double step, bool periodic, Cost
 
 // Least-squares fit of the line from one start (its strikes' coordinates); returns its sum of squared
 // errors. Alternates: each mode's phase and offset given the strikes, each strike's coordinate and
-// gain given the modes.
-double fit_from(const Eigen::MatrixXd& ln, BendingLine& line, std::vector<double>& gain) {
+// gain given the modes. The gains start at each strike's mean.
+double fit_from(const Eigen::MatrixXd& ln, BendingLine& line) {
   const std::vector<double>& grid = line_grid_rad();
   const Eigen::Index strikes = ln.rows(), modes = ln.cols();
+  std::vector<double> gain(static_cast<std::size_t>(strikes));
+  for (Eigen::Index s = 0; s < strikes; ++s) gain[std::size_t(s)] = ln.row(s).mean();
   double sse = std::numeric_limits<double>::infinity();
   for (int it = 0; it < kIterations; ++it) {
     for (Eigen::Index n = 0; n < modes; ++n) {
@@ -140,15 +142,10 @@ double fit_in_stages(const Eigen::MatrixXd& ln, BendingLine& line) {
     stage.phase_rad.assign(cols.size(), 0.0);
     stage.offset_ln.assign(cols.size(), 0.0);
     stage.strike_u = line.strike_u;
-    const Eigen::MatrixXd sub = ln(Eigen::all, cols);
-    std::vector<double> gain(static_cast<std::size_t>(ln.rows()));
-    for (Eigen::Index s = 0; s < ln.rows(); ++s) gain[std::size_t(s)] = sub.row(s).mean();
-    fit_from(sub, stage, gain);
+    fit_from(ln(Eigen::all, cols), stage);
     line.strike_u = stage.strike_u;
   }
-  std::vector<double> gain(static_cast<std::size_t>(ln.rows()));
-  for (Eigen::Index s = 0; s < ln.rows(); ++s) gain[std::size_t(s)] = ln.row(s).mean();
-  return fit_from(ln, line, gain);
+  return fit_from(ln, line);
 }
 
 }  // namespace
