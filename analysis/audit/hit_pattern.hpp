@@ -25,7 +25,9 @@ struct HitPattern {
   std::vector<double> positions;
   std::vector<std::vector<double>> shape_ln;  // [position][mode]
   std::vector<std::size_t> strike_position;   // per strike, index into positions
-  std::size_t home_position = 0;              // the parameter set's own hit (its row is all 0)
+  // An object's: the parameter set's own hit (its row is all 0); a learnt line's: the grid's middle,
+  // where a strike sits before it is placed.
+  std::size_t home_position = 0;
   bool learnt_line = false;  // positions and shape_ln learnt from the strikes, not given by an object
 
   bool from_object() const { return !shape_ln.empty() && !learnt_line; }

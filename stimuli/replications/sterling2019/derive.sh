@@ -145,8 +145,10 @@ for cell in disc-wood disc-plastic disc-glass disc-porcelain rod-metal rod-plast
   [[ $cell == rod-* ]] && object=$HERE/rod.yaml
   derive "$cell" "$object" "$WORK/$cell/strike0.wav" "$WORK/$cell"/strike{0,1,2,3,4,5,6,7,8,9}.wav
 done
-cp "$WORK/fits.csv" "$OUT/fits.csv"
-cp "$WORK/emg-choice.csv" "$OUT/emg-choice.csv"
+# Each file replaced whole (a copy beside it, then a rename), so a kill never leaves half a table.
+for table in fits.csv emg-choice.csv; do
+  cp "$WORK/$table" "$OUT/.$table.part" && mv -f "$OUT/.$table.part" "$OUT/$table"
+done
 # The protocol plays the committed fits, so it follows them only when all of them were derived again.
 if [[ ${#CELLS[@]} -eq 0 && -n $INTO_COMMITTED ]]; then
   python3 "$HERE/set_protocol_laws.py" "$OUT" protocols/sterling2019.yaml >/dev/null
