@@ -172,13 +172,29 @@ Eigen::MatrixXd without_row(const Eigen::MatrixXd& ln, Eigen::Index k) {
   return out;
 }
 
-// Mean squared error (natural-log units) of predicting each held-out strike's modes of one half from
-// the other half with a rank-`rank` pattern learnt on the other strikes (bi-cross-validation).
-double held_out_half_mse(const Eigen::MatrixXd& ln, std::size_t rank) {
+// Held-out mean squared errors (natural-log units) pooled over the strikes two ways: over every strike,
+// and the median strike's. A strike that landed outside the others' span is predicted by extrapolating
+// what was learnt from them; pooled, that one strike decides even where a pattern predicts the others
+// many times better, which the median strike shows. Either alone misses hit points the other names.
+struct HeldOutMse {
+  double pooled = 0.0, median_strike = 0.0;
+};
+
+HeldOutMse over_strikes(const std::vector<double>& mse_per_strike) {
+  if (mse_per_strike.empty()) return {};
+  double sum = 0.0;
+  for (double m : mse_per_strike) sum += m;
+  return {sum / double(mse_per_strike.size()), median(mse_per_strike)};
+}
+
+// Predicting each held-out strike's modes of one half from the other half with a rank-`rank` pattern
+// learnt on the other strikes (bi-cross-validation).
+HeldOutMse held_out_half_mse(const Eigen::MatrixXd& ln, std::size_t rank) {
   const Eigen::Index strikes = ln.rows(), modes = ln.cols();
-  double sse = 0.0;
-  std::size_t count = 0;
+  std::vector<double> per_strike;
   for (Eigen::Index k = 0; k < strikes; ++k) {
+    double sse = 0.0;
+    std::size_t count = 0;
     const Eigen::MatrixXd train = without_row(ln, k);
     const Eigen::RowVectorXd shape = train.colwise().mean();
     const Eigen::MatrixXd load = loadings(double_centred(train), rank);
@@ -194,8 +210,9 @@ double held_out_half_mse(const Eigen::MatrixXd& ln, std::size_t rank) {
         ++count;
       }
     }
+    if (count) per_strike.push_back(sse / double(count));
   }
-  return count ? sse / double(count) : 0.0;
+  return over_strikes(per_strike);
 }
 
 // The least-squares gain and position (row of `shapes`; none when it has no rows) of a strike's
@@ -227,9 +244,12 @@ Placed place(const Eigen::VectorXd& x, const Eigen::MatrixXd& shapes, const std:
   return best;
 }
 
-// Adds the errors of predicting each half of a strike's modes x from the other half, with the strike
-// placed (and its gain chosen) among `shapes` on the first half; no shapes: a gain alone.
-void add_placed_half_errors(const Eigen::VectorXd& x, const Eigen::MatrixXd& shapes, double& sse, std::size_t& count) {
+// The mean squared error of predicting each half of a strike's modes x from the other half, with the
+// strike placed (and its gain chosen) among `shapes` on the first half; no shapes: a gain alone. Appended
+// to `per_strike` (nothing where the strike has too few modes).
+void add_placed_half_errors(const Eigen::VectorXd& x, const Eigen::MatrixXd& shapes, std::vector<double>& per_strike) {
+  double sse = 0.0;
+  std::size_t count = 0;
   for (int half = 0; half < 2 * kSplits; ++half) {
     std::vector<Eigen::Index> fit, predict;
     for (Eigen::Index j = 0; j < x.size(); ++j) (in_first_half(j, half / 2) == (half % 2 == 0) ? fit : predict).push_back(j);
@@ -241,15 +261,15 @@ void add_placed_half_errors(const Eigen::VectorXd& x, const Eigen::MatrixXd& sha
       ++count;
     }
   }
+  if (count) per_strike.push_back(sse / double(count));
 }
 
 // Hit positions: each strike's position and gain chosen on one half of its modes predict the other
 // half (nothing is learnt from the other strikes: the object's shapes are given). No shapes: a gain alone.
-double held_out_half_mse_object(const Eigen::MatrixXd& ln, const Eigen::MatrixXd& shapes) {
-  double sse = 0.0;
-  std::size_t count = 0;
-  for (Eigen::Index k = 0; k < ln.rows(); ++k) add_placed_half_errors(ln.row(k).transpose(), shapes, sse, count);
-  return count ? sse / double(count) : 0.0;
+HeldOutMse held_out_half_mse_object(const Eigen::MatrixXd& ln, const Eigen::MatrixXd& shapes) {
+  std::vector<double> per_strike;
+  for (Eigen::Index k = 0; k < ln.rows(); ++k) add_placed_half_errors(ln.row(k).transpose(), shapes, per_strike);
+  return over_strikes(per_strike);
 }
 
 // The points of a path through `rows` strikes' patterns: each strike's own, and a quarter, half and
@@ -273,61 +293,71 @@ Eigen::MatrixXd path_weights(Eigen::Index rows) {
 }
 
 // A held-out strike placed on the path through the other strikes' patterns (bi-cross-validation as above).
-double held_out_half_mse_path(const Eigen::MatrixXd& ln) {
+HeldOutMse held_out_half_mse_path(const Eigen::MatrixXd& ln) {
   const Eigen::Index strikes = ln.rows();
   const Eigen::MatrixXd weights = path_weights(strikes - 1);
-  double sse = 0.0;
-  std::size_t count = 0;
-  for (Eigen::Index k = 0; k < strikes; ++k) {
-    add_placed_half_errors(ln.row(k).transpose(), weights * without_row(ln, k), sse, count);
-  }
-  return count ? sse / double(count) : 0.0;
+  std::vector<double> per_strike;
+  for (Eigen::Index k = 0; k < strikes; ++k) add_placed_half_errors(ln.row(k).transpose(), weights * without_row(ln, k), per_strike);
+  return over_strikes(per_strike);
 }
 
 // A gain alone, chosen as a strike is placed on a path or a line (median, so a mode near a node does not
 // pull it), the training strikes' mean per mode as the shape.
-double held_out_half_mse_robust_gain(const Eigen::MatrixXd& ln) {
-  double sse = 0.0;
-  std::size_t count = 0;
+HeldOutMse held_out_half_mse_robust_gain(const Eigen::MatrixXd& ln) {
+  std::vector<double> per_strike;
   for (Eigen::Index k = 0; k < ln.rows(); ++k) {
     const Eigen::VectorXd x = (ln.row(k) - without_row(ln, k).colwise().mean()).transpose();
-    add_placed_half_errors(x, Eigen::MatrixXd(0, ln.cols()), sse, count);
+    add_placed_half_errors(x, Eigen::MatrixXd(0, ln.cols()), per_strike);
   }
-  return count ? sse / double(count) : 0.0;
+  return over_strikes(per_strike);
 }
 
 // A held-out strike placed on a bending-wave line learnt from the other strikes (bi-cross-validation as above).
-double held_out_half_mse_line(const Eigen::MatrixXd& ln, const std::vector<double>& freq_hz) {
-  double sse = 0.0;
-  std::size_t count = 0;
+HeldOutMse held_out_half_mse_line(const Eigen::MatrixXd& ln, const std::vector<double>& freq_hz) {
+  std::vector<double> per_strike;
   for (Eigen::Index k = 0; k < ln.rows(); ++k)
-    add_placed_half_errors(ln.row(k).transpose(), fit_bending_line(without_row(ln, k), freq_hz).shapes(), sse, count);
-  return count ? sse / double(count) : 0.0;
+    add_placed_half_errors(ln.row(k).transpose(), fit_bending_line(without_row(ln, k), freq_hz).shapes(), per_strike);
+  return over_strikes(per_strike);
 }
 
 struct PatternChoice {
   std::size_t rank = 0;  // low-rank patterns
   bool path = false;     // a path through the strikes instead
   bool line = false;     // a bending-wave line instead
+  bool median_strike = false;  // the errors compared are the median strike's, not every strike's
   double gain_only_rms = 0.0, pattern_rms = 0.0;  // held-out-half RMS, natural-log units
   bool found() const { return path || line || rank > 0; }
 };
 
-// The rank with the smallest held-out-half error (0: a gain alone), up to what the strikes and modes
-// allow, or the path through the strikes or a bending-wave line where either predicts better still.
+// The pattern family that most improves on a gain alone, the held-out errors pooled either way: the
+// ranks up to what the strikes and modes allow, the path through the strikes, a bending-wave line
+// (none found: a gain alone). Of equal improvements the first family and the pooled errors win.
 constexpr Eigen::Index kMinPathStrikes = 4;  // a held-out strike placed among three others at least
 PatternChoice choose_pattern(const Eigen::MatrixXd& ln, const std::vector<double>& freq_hz) {
-  PatternChoice c;
   // A pattern must beat a gain alone however the gain is chosen: least squares (as the ranks fit it) or
   // the median (as the path and the line place a strike, robust to a mode near a node).
-  c.gain_only_rms = c.pattern_rms = std::sqrt(std::min(held_out_half_mse(ln, 0), held_out_half_mse_robust_gain(ln)));
+  const HeldOutMse least_squares = held_out_half_mse(ln, 0), robust = held_out_half_mse_robust_gain(ln);
+  const HeldOutMse gain{std::min(least_squares.pooled, robust.pooled), std::min(least_squares.median_strike, robust.median_strike)};
+  struct Family {
+    std::size_t rank;
+    bool path, line;
+    HeldOutMse mse;
+  };
+  std::vector<Family> families;
   const std::size_t most = std::min({kMaxRank, std::size_t(std::max<Eigen::Index>(ln.rows() - 2, 0)),
                                      std::size_t(std::max<Eigen::Index>(ln.cols() / 2 - 2, 0))});
-  for (std::size_t r = 1; r <= most; ++r)
-    if (const double rms = std::sqrt(held_out_half_mse(ln, r)); rms < c.pattern_rms) c = {r, false, false, c.gain_only_rms, rms};
+  for (std::size_t r = 1; r <= most; ++r) families.push_back({r, false, false, held_out_half_mse(ln, r)});
   if (ln.rows() >= kMinPathStrikes) {
-    if (const double rms = std::sqrt(held_out_half_mse_path(ln)); rms < c.pattern_rms) c = {0, true, false, c.gain_only_rms, rms};
-    if (const double rms = std::sqrt(held_out_half_mse_line(ln, freq_hz)); rms < c.pattern_rms) c = {0, false, true, c.gain_only_rms, rms};
+    families.push_back({0, true, false, held_out_half_mse_path(ln)});
+    families.push_back({0, false, true, held_out_half_mse_line(ln, freq_hz)});
+  }
+  PatternChoice c;
+  c.gain_only_rms = c.pattern_rms = std::sqrt(gain.pooled);
+  for (bool by_median : {false, true}) {
+    const auto rms = [&](const HeldOutMse& m) { return std::sqrt(by_median ? m.median_strike : m.pooled); };
+    for (const Family& f : families)
+      if (rms(gain) - rms(f.mse) > std::max(0.0, c.gain_only_rms - c.pattern_rms))
+        c = {f.rank, f.path, f.line, by_median, rms(gain), rms(f.mse)};
   }
   return c;
 }
@@ -457,8 +487,9 @@ Detection detect(const AuditData& data, const AuditModel& current) {
   }
   PatternChoice c;
   if (current.hit.from_object()) {
-    c.gain_only_rms = std::sqrt(held_out_half_mse_object(r.ln, Eigen::MatrixXd(0, r.ln.cols())));
-    c.pattern_rms = std::sqrt(held_out_half_mse_object(r.ln, shapes_on(current, r.modes)));
+    // The shapes are given, not learnt from the other strikes: nothing is extrapolated.
+    c.gain_only_rms = std::sqrt(held_out_half_mse_object(r.ln, Eigen::MatrixXd(0, r.ln.cols())).pooled);
+    c.pattern_rms = std::sqrt(held_out_half_mse_object(r.ln, shapes_on(current, r.modes)).pooled);
     c.rank = c.pattern_rms < c.gain_only_rms ? 1 : 0;
   } else {
     c = choose_pattern(without_tilt(r.ln, current, r.modes, r.strikes), r.freq_hz);
@@ -485,12 +516,13 @@ Detection detect(const AuditData& data, const AuditModel& current) {
     std::snprintf(buf, sizeof buf,
                   "the modes' amplitudes change from strike to strike by more than a gain and a spectral tilt, %s: "
                   "fitted on half of a held-out strike's %zu modes it predicts the other half to %.2f dB RMS instead "
-                  "of %.2f dB with a gain alone (%s)",
-                  shared.c_str(), r.modes.size(), kDbPerNeper * c.pattern_rms, kDbPerNeper * c.gain_only_rms, null_text);
+                  "of %.2f dB with a gain alone (%s; %s)",
+                  shared.c_str(), r.modes.size(), kDbPerNeper * c.pattern_rms, kDbPerNeper * c.gain_only_rms,
+                  c.median_strike ? "the median strike" : "over every strike", null_text);
   else
     std::snprintf(buf, sizeof buf,
                   "%s predicts a held-out strike's modes better than a gain alone (fitted on half of its %zu modes, "
-                  "the other half to %.2f dB RMS)",
+                  "the other half to %.2f dB RMS over every strike)",
                   current.hit.from_object() ? "no hit point on the object's mode shapes" : "no pattern the strikes share",
                   r.modes.size(), kDbPerNeper * c.gain_only_rms);
   d.evidence = buf;
