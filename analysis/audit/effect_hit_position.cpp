@@ -356,9 +356,9 @@ PatternChoice choose_pattern(const Eigen::MatrixXd& ln, const std::vector<double
   c.gain_only_rms = c.pattern_rms = std::sqrt(gain.pooled);
   for (bool by_median : {false, true}) {
     const auto rms = [&](const HeldOutMse& m) { return std::sqrt(by_median ? m.median_strike : m.pooled); };
+    const double gain_rms = rms(gain);
     for (const Family& f : families)
-      if (rms(gain) - rms(f.mse) > std::max(0.0, c.gain_only_rms - c.pattern_rms))
-        c = {f.rank, f.path, f.line, by_median, rms(gain), rms(f.mse)};
+      if (gain_rms - rms(f.mse) > c.gain_only_rms - c.pattern_rms) c = {f.rank, f.path, f.line, by_median, gain_rms, rms(f.mse)};
   }
   return c;
 }
