@@ -1,16 +1,16 @@
-// hit_position: strikes that move. Where a strike lands sets how strongly each mode sounds (the mode
-// shape at the hit point), so the modes' amplitudes change from strike to strike by more than a gain,
-// in a pattern the modes share. Detector: on the modes' log-amplitude residuals (measured / model), with
-// each strike's gain, smooth spectral tilt and contact mismatch taken out (a contact is not a hit point),
-// a pattern fitted on the other strikes predicts half of a held-out strike's modes from the other half
-// better than a gain alone, by enough (bi-cross-validation; rank 0 wins on independent per-mode scatter,
-// which no model can predict). Extension: with an object's mode shapes (a bar or plate parameter set),
-// a hit position per strike; without, a low-rank pattern (loadings per mode fitted on the training
-// strikes, rank chosen by the same bi-cross-validation, a weight per strike its latent value), or, where
-// it predicts better, a path through the training strikes' own patterns (a strike placed on or between
-// two of them: the hit point moves along a line, and shapes that bend between strikes are no low rank),
-// or a bending-wave line learnt from the strikes (bending_line.hpp: one coordinate per strike places
-// every mode, its shape's wavenumber growing as the square root of its frequency).
+// hit_position: strikes that move. Where a strike lands sets how strongly each mode sounds (the mode shape
+// at the hit point), so the modes' amplitudes change from strike to strike by more than a gain, in a
+// pattern the modes share. Detector: on the modes' log-amplitude residuals (measured with the model's
+// poles fixed / model), with each strike's gain, smooth spectral tilt and contact mismatch taken out (a
+// contact is not a hit point), a pattern fitted on the other strikes predicts half of a held-out strike's
+// modes from the other half better than a gain alone, by enough (bi-cross-validation; rank 0 wins on
+// independent per-mode scatter, which no model can predict). Extension: with an object's mode shapes (a
+// bar or plate parameter set), a hit position per strike; without, a low-rank pattern (loadings per mode
+// fitted on the training strikes, rank chosen by the same bi-cross-validation, a weight per strike its
+// latent value), or, where it predicts better, a path through the training strikes' own patterns (a strike
+// placed on or between two of them: the hit point moves along a line, and shapes that bend between strikes
+// are no low rank), or a bending-wave line learnt from the strikes (bending_line.hpp: one coordinate per
+// strike places every mode, its shape's wavenumber growing as the square root of its frequency).
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
@@ -24,6 +24,7 @@
 #include "analysis/audit/bending_line.hpp"
 #include "analysis/audit/contact_spectrum.hpp"
 #include "analysis/audit/effect_catalog.hpp"
+#include "analysis/audit/fixed_pole_amplitudes.hpp"
 
 namespace ms::audit {
 
@@ -40,6 +41,8 @@ constexpr double kDbPerNeper = 8.685889638065035;
 // A mode near a node of its shape at some strike's hit point all but vanishes there: its log residual
 // would dominate every fit. Residuals are read within -+13 dB.
 constexpr double kMaxResidualLn = 1.5;
+// The amplitudes are fitted from here on, past a contact (up to 1.5 ms) and its first ringing.
+constexpr double kFitFrom_s = 0.002;
 
 // No hit pattern: every strike's modes at the set's amplitudes (the object's grid, if any, stays).
 void clear_pattern(HitPattern& hit) {
@@ -86,14 +89,38 @@ Residuals residuals(const AuditData& data, const AuditModel& model, const std::v
       r.freq_hz.push_back(m.freq_hz);
     }
   }
+  // The amplitudes are read again with the model's poles fixed, every tracked mode at once (a doublet's
+  // two): the tracks' own, fitted freely, scatter beside a room by as much as a hit pattern moves them
+  // (the fit splits the room's answer around a mode differently from strike to strike). A doublet's
+  // amplitude is its two modes' added as energies, as its track's is.
   r.ln.resize(Eigen::Index(strikes.size()), Eigen::Index(r.modes.size()));
-  for (std::size_t i = 0; i < strikes.size(); ++i)
+  for (std::size_t i = 0; i < strikes.size(); ++i) {
+    std::vector<Mode> poles;
+    std::vector<std::size_t> first_pole(model.modes.size() + 1, 0);
+    for (std::size_t n = 0; n < model.modes.size(); ++n) {
+      first_pole[n] = poles.size();
+      const AuditMode& m = model.modes[n];
+      if (m.track < 0 || m.amp <= 0.0) continue;
+      const double decay_per_s = strike_decay(model, strikes[i], n);
+      const double split_hz = m.doublet.split_hz;
+      if (split_hz > 0.0) {
+        poles.push_back({.freq_hz = m.freq_hz - 0.5 * split_hz, .decay_per_s = decay_per_s});
+        poles.push_back({.freq_hz = m.freq_hz + 0.5 * split_hz, .decay_per_s = decay_per_s});
+      } else {
+        poles.push_back({.freq_hz = m.freq_hz, .decay_per_s = decay_per_s});
+      }
+    }
+    first_pole.back() = poles.size();
+    const std::vector<double> amp = fixed_pole_amplitudes(data.measured.strikes[strikes[i]].samples,
+                                                          data.measured.sample_rate_hz, poles, kFitFrom_s);
     for (std::size_t j = 0; j < r.modes.size(); ++j) {
       const std::size_t n = r.modes[j];
-      const TrackObservation& o = data.tracks[std::size_t(model.modes[n].track)].strikes[strikes[i]];
-      r.ln(Eigen::Index(i), Eigen::Index(j)) =
-          std::clamp(std::log(o.amp / strike_amp(plain, strikes[i], n)), -kMaxResidualLn, kMaxResidualLn);
+      double energy = 0.0;
+      for (std::size_t k = first_pole[n]; k < first_pole[n + 1]; ++k) energy += amp[k] * amp[k];
+      r.ln(Eigen::Index(i), Eigen::Index(j)) = std::clamp(std::log(std::sqrt(energy) / strike_amp(plain, strikes[i], n)),
+                                                          -kMaxResidualLn, kMaxResidualLn);
     }
+  }
   return r;
 }
 

@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <random>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -86,6 +87,23 @@ TEST(AuditHitPosition, StrikesThatLandNearEachOtherSoundAlikeAlongAPath) {
     EXPECT_EQ(strikes_on_path->second, 5.0) << seed;  // the path runs through all five strikes
     EXPECT_FALSE(std::any_of(p.begin(), p.end(), [](const auto& kv) { return kv.first == "rank" || kv.first == "line_span_rad"; }))
         << seed;
+  }
+}
+
+// Beside a room the free fit splits the room's answer around a mode differently from strike to strike
+// and reads a few modes 5-12 dB off; read with the model's poles fixed, the hit pattern shows through.
+// First-generator held-out seeds (spent) where hit points beside a room were missed, at their strengths.
+TEST(AuditHitPosition, HitPointsBesideARoomAreNamedAfterIt) {
+  for (auto [seed, hit, room] : {std::tuple<std::uint64_t, double, double>{18621u, 0.10, 0.41},
+                                 {18632u, 0.43, 0.79},
+                                 {17923u, 0.36, 0.39}}) {
+    const HiddenCase hc = generate_hidden_case(seed, {"hit_position", "reverberation"}, {hit, room});
+    const AuditResult r = run_audit(make_audit_data(hc.recordings));
+    print(hc.summary.c_str(), r);
+    ASSERT_FALSE(r.named.empty()) << seed;
+    EXPECT_EQ(r.named.front().effect, "reverberation") << seed;
+    EXPECT_TRUE(named(r, "hit_position")) << seed;
+    EXPECT_GE(r.share_above_floor, 0.5) << seed;
   }
 }
 
