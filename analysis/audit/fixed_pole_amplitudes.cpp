@@ -1,7 +1,9 @@
 #include "analysis/audit/fixed_pole_amplitudes.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
+#include <cstddef>
 #include <numbers>
 
 #include "analysis/extraction/damped_fit.hpp"
