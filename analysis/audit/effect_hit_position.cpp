@@ -95,20 +95,18 @@ Residuals residuals(const AuditData& data, const AuditModel& model, const std::v
   // amplitude is its two modes' added as energies, as its track's is.
   r.ln.resize(Eigen::Index(strikes.size()), Eigen::Index(r.modes.size()));
   for (std::size_t i = 0; i < strikes.size(); ++i) {
+    // The strike's modes as the model renders them (a doublet as its two) give the poles.
+    const ModalModel heard = strike_model(model, strikes[i]);
     std::vector<Mode> poles;
     std::vector<std::size_t> first_pole(model.modes.size() + 1, 0);
-    for (std::size_t n = 0; n < model.modes.size(); ++n) {
+    for (std::size_t n = 0, rendered = 0; n < model.modes.size(); ++n) {
       first_pole[n] = poles.size();
       const AuditMode& m = model.modes[n];
-      if (m.track < 0 || m.amp <= 0.0) continue;
-      const double decay_per_s = strike_decay(model, strikes[i], n);
-      const double split_hz = m.doublet.split_hz;
-      if (split_hz > 0.0) {
-        poles.push_back({.freq_hz = m.freq_hz - 0.5 * split_hz, .decay_per_s = decay_per_s});
-        poles.push_back({.freq_hz = m.freq_hz + 0.5 * split_hz, .decay_per_s = decay_per_s});
-      } else {
-        poles.push_back({.freq_hz = m.freq_hz, .decay_per_s = decay_per_s});
-      }
+      const std::size_t count = m.doublet.split_hz > 0.0 ? 2 : 1;
+      if (m.track >= 0 && m.amp > 0.0)
+        poles.insert(poles.end(), heard.modes.begin() + std::ptrdiff_t(rendered),
+                     heard.modes.begin() + std::ptrdiff_t(rendered + count));
+      rendered += count;
     }
     first_pole.back() = poles.size();
     const std::vector<double> amp = fixed_pole_amplitudes(data.measured.strikes[strikes[i]].samples,
