@@ -92,31 +92,43 @@ Residuals residuals(const AuditData& data, const AuditModel& model, const std::v
   // The amplitudes are read again with the model's poles fixed, every tracked mode at once (a doublet's
   // two): the tracks' own, fitted freely, scatter beside a room by as much as a hit pattern moves them
   // (the fit splits the room's answer around a mode differently from strike to strike). A doublet's
-  // amplitude is its two modes' added as energies, as its track's is.
+  // amplitude is its two modes' added as energies, as its track's is; a pair too close to beat apart while
+  // it is heard is read as one pole at its centre (its two members start in phase, so that pole's
+  // amplitude is their sum, and the pair's energy that times hypot(1 - balance, balance)).
   r.ln.resize(Eigen::Index(strikes.size()), Eigen::Index(r.modes.size()));
   for (std::size_t i = 0; i < strikes.size(); ++i) {
     // The strike's modes as the model renders them (a doublet as its two) give the poles.
     const ModalModel heard = strike_model(model, strikes[i]);
+    const std::vector<float>& samples = data.measured.strikes[strikes[i]].samples;
+    const double heard_s = double(samples.size()) / data.measured.sample_rate_hz - kFitFrom_s;
     std::vector<Mode> poles;
     std::vector<std::size_t> first_pole(model.modes.size() + 1, 0);
+    std::vector<double> merged_pair_scale(model.modes.size(), 0.0);  // 0: the mode's poles read apart
     for (std::size_t n = 0, rendered = 0; n < model.modes.size(); ++n) {
       first_pole[n] = poles.size();
       const AuditMode& m = model.modes[n];
       const std::size_t count = m.doublet.split_hz > 0.0 ? 2 : 1;
-      if (m.track >= 0 && m.amp > 0.0)
-        poles.insert(poles.end(), heard.modes.begin() + std::ptrdiff_t(rendered),
-                     heard.modes.begin() + std::ptrdiff_t(rendered + count));
+      const auto first = heard.modes.begin() + std::ptrdiff_t(rendered);
       rendered += count;
+      if (m.track < 0 || m.amp <= 0.0) continue;
+      if (count == 2 && !pair_beats_apart(m.doublet.split_hz, first->decay_per_s, heard_s)) {
+        Mode centre = *first;
+        centre.freq_hz = m.freq_hz;
+        poles.push_back(centre);
+        merged_pair_scale[n] = std::hypot(1.0 - m.doublet.balance, m.doublet.balance);
+      } else {
+        poles.insert(poles.end(), first, first + std::ptrdiff_t(count));
+      }
     }
     first_pole.back() = poles.size();
-    const std::vector<double> amp = fixed_pole_amplitudes(data.measured.strikes[strikes[i]].samples,
-                                                          data.measured.sample_rate_hz, poles, kFitFrom_s);
+    const std::vector<double> amp = fixed_pole_amplitudes(samples, data.measured.sample_rate_hz, poles, kFitFrom_s);
     for (std::size_t j = 0; j < r.modes.size(); ++j) {
       const std::size_t n = r.modes[j];
       double energy = 0.0;
       for (std::size_t k = first_pole[n]; k < first_pole[n + 1]; ++k) energy += amp[k] * amp[k];
-      r.ln(Eigen::Index(i), Eigen::Index(j)) = std::clamp(std::log(std::sqrt(energy) / strike_amp(plain, strikes[i], n)),
-                                                          -kMaxResidualLn, kMaxResidualLn);
+      const double read = merged_pair_scale[n] > 0.0 ? merged_pair_scale[n] * std::sqrt(energy) : std::sqrt(energy);
+      r.ln(Eigen::Index(i), Eigen::Index(j)) =
+          std::clamp(std::log(read / strike_amp(plain, strikes[i], n)), -kMaxResidualLn, kMaxResidualLn);
     }
   }
   return r;

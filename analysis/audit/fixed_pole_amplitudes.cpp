@@ -26,4 +26,9 @@ std::vector<double> fixed_pole_amplitudes(const std::vector<float>& samples, dou
   return amp;
 }
 
+bool pair_beats_apart(double split_hz, double decay_per_s, double heard_s) {
+  const double heard_for_s = decay_per_s > 0.0 ? std::min(heard_s, 1.0 / decay_per_s) : heard_s;
+  return 2.0 * std::numbers::pi * split_hz * heard_for_s >= 1.0;
+}
+
 }  // namespace ms::audit
