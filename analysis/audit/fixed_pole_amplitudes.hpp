@@ -17,8 +17,8 @@ std::vector<double> fixed_pole_amplitudes(const std::vector<float>& samples, dou
 
 // Whether two poles split by split_hz, decaying at decay_per_s, drift a radian apart in phase while they
 // are heard (for heard_s, or one time constant, whichever is shorter). Closer, their two columns are all
-// but one: a fit of both splits the pair's sound between them at random (the noise decides), and the pair
-// is read as one pole.
+// but one: how a fit of both splits the pair's sound between them is decided by whatever else sounds near
+// them (a room's answer, noise), so the pair is read as one pole.
 bool pair_beats_apart(double split_hz, double decay_per_s, double heard_s);
 
 }  // namespace ms::audit
