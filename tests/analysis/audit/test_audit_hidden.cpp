@@ -73,7 +73,8 @@ TEST(AuditHidden, DISABLED_AuditTuning) {
 // (to check a change on seeds nobody has looked at; 14000-14239, 15000-15239, 15240-15479,
 // 15480-15719, 15720-15959, 15960-16199, 16200-16439, 16440-16679, 16680-16919, 16920-17159,
 // 17160-17399, 17400-17639, 17640-17879, 17880-18119, 18120-18359, 18360-18599, 18600-18839,
-// 18840-19079, 19080-19319, 19320-19559 and 19560-19799 have been).
+// 18840-19079, 19080-19319, 19320-19559, 19560-19799 and 19800-20039 have
+// been).
 TEST(AuditHidden, HeldOutSeedsMeetTheBars) {
   Tally tally;
   const auto t0 = std::chrono::steady_clock::now();
