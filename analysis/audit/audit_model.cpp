@@ -127,7 +127,7 @@ void add_band_noise_power(BarkSpectrogram& spec, const SpectrogramGrid& g, const
 ModalModel dry_strike_model(const AuditModel& model, std::size_t s, double fs, std::vector<std::size_t>* owner) {
   ModalModel modal = strike_model(model, s);
   std::vector<std::size_t> of;  // a doublet renders two modes
-  for (std::size_t n = 0; n < model.modes.size(); ++n) of.insert(of.end(), model.modes[n].doublet.split_hz > 0.0 ? 2 : 1, n);
+  for (std::size_t n = 0; n < model.modes.size(); ++n) of.insert(of.end(), rendered_count(model.modes[n]), n);
   if (model.room.enabled) {
     for (std::size_t j = 0; j < modal.modes.size(); ++j) modal.modes[j].amp *= model.modes[of[j]].room_gain;
     make_dry(modal, room_rates(model.room, fs), fs);

@@ -74,6 +74,9 @@ std::vector<std::size_t> all_strikes(const AuditData& data);
 // The modes that sound in strike s (gain, extra decay, contact factor, doublets applied).
 ModalModel strike_model(const AuditModel& model, std::size_t strike);
 
+// How many of strike_model's modes a model mode renders, in order: a doublet two, any other one.
+inline std::size_t rendered_count(const AuditMode& m) { return m.doublet.split_hz > 0.0 ? 2 : 1; }
+
 // strike_model with the room's dry amplitudes (room_power.hpp, times each mode's room_gain) when the
 // model has a room, without the modes at or above Nyquist; owner (if given) receives the model mode
 // each rendered mode stands for.

@@ -103,11 +103,11 @@ Residuals residuals(const AuditData& data, const AuditModel& model, const std::v
     const double heard_s = double(samples.size()) / data.measured.sample_rate_hz - kFitFrom_s;
     std::vector<Mode> poles;
     std::vector<std::size_t> first_pole(model.modes.size() + 1, 0);
-    std::vector<double> merged_pair_scale(model.modes.size(), 0.0);  // 0: the mode's poles read apart
+    std::vector<double> energy_scale(model.modes.size(), 1.0);  // a merged pair's hypot(1 - balance, balance)
     for (std::size_t n = 0, rendered = 0; n < model.modes.size(); ++n) {
       first_pole[n] = poles.size();
       const AuditMode& m = model.modes[n];
-      const std::size_t count = m.doublet.split_hz > 0.0 ? 2 : 1;
+      const std::size_t count = rendered_count(m);
       const auto first = heard.modes.begin() + std::ptrdiff_t(rendered);
       rendered += count;
       if (m.track < 0 || m.amp <= 0.0) continue;
@@ -115,7 +115,7 @@ Residuals residuals(const AuditData& data, const AuditModel& model, const std::v
         Mode centre = *first;
         centre.freq_hz = m.freq_hz;
         poles.push_back(centre);
-        merged_pair_scale[n] = std::hypot(1.0 - m.doublet.balance, m.doublet.balance);
+        energy_scale[n] = std::hypot(1.0 - m.doublet.balance, m.doublet.balance);
       } else {
         poles.insert(poles.end(), first, first + std::ptrdiff_t(count));
       }
@@ -126,9 +126,8 @@ Residuals residuals(const AuditData& data, const AuditModel& model, const std::v
       const std::size_t n = r.modes[j];
       double energy = 0.0;
       for (std::size_t k = first_pole[n]; k < first_pole[n + 1]; ++k) energy += amp[k] * amp[k];
-      const double read = merged_pair_scale[n] > 0.0 ? merged_pair_scale[n] * std::sqrt(energy) : std::sqrt(energy);
-      r.ln(Eigen::Index(i), Eigen::Index(j)) =
-          std::clamp(std::log(read / strike_amp(plain, strikes[i], n)), -kMaxResidualLn, kMaxResidualLn);
+      r.ln(Eigen::Index(i), Eigen::Index(j)) = std::clamp(
+          std::log(energy_scale[n] * std::sqrt(energy) / strike_amp(plain, strikes[i], n)), -kMaxResidualLn, kMaxResidualLn);
     }
   }
   return r;
